@@ -1,0 +1,32 @@
+#pragma once
+// Seeded pseudo-random numbers with distributions written here, so a seed gives the same stream on
+// every standard library (std::*_distribution is implementation-defined).
+
+#include <cstddef>
+#include <cstdint>
+#include <random>
+
+namespace graspecmf {
+
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : engine_(seed) {}
+
+  // 64 uniformly random bits.
+  std::uint64_t next_u64() { return engine_(); }
+  // Uniform in [0, 1) with 53 random bits.
+  double uniform();
+  // Uniform in [lo, hi).
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+  // Standard normal N(0, 1) (Box–Muller; the second value of each pair is kept for the next call).
+  double normal();
+  // Uniform integer in [0, n) without modulo bias; n must be > 0.
+  std::size_t index(std::size_t n);
+
+ private:
+  std::mt19937_64 engine_;
+  bool has_spare_normal_ = false;
+  double spare_normal_ = 0.0;
+};
+
+}  // namespace graspecmf

@@ -1,0 +1,22 @@
+#pragma once
+// Volume, centre of mass and inertia tensor of a closed triangle mesh of uniform density, by the
+// divergence theorem (a signed tetrahedron from the origin per triangle).
+
+#include "graspecmf/geometry/triangle_mesh.hpp"
+
+namespace graspecmf::geometry {
+
+using Mat3 = Eigen::Matrix3d;
+
+struct MassProperties {
+  double volume = 0.0;  // signed: negative when the triangles face inwards
+  double mass = 0.0;    // density × volume
+  Vec3 center_of_mass = Vec3::Zero();
+  Mat3 inertia = Mat3::Zero();  // about the centre of mass, standard sign (positive-definite)
+};
+
+// Mass properties of a closed, consistently oriented mesh; results for an open mesh are meaningless.
+// Throws Error if the volume is zero.
+MassProperties mass_properties(const TriangleMesh& mesh, double density = 1.0);
+
+}  // namespace graspecmf::geometry
