@@ -1,8 +1,10 @@
 #pragma once
 // The rotation group SO(3) in double precision: hat/vee, exponential and logarithm maps that stay
-// accurate near the identity (Taylor branches) and near a half turn (θ → π), distances and geodesics.
+// accurate near the identity (Taylor branches) and near a half turn (θ → π), distances and
+// geodesics.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products, quaternions
 
 namespace graspecmf::lie {
 
@@ -26,7 +28,7 @@ double so3_distance(const Mat3& A, const Mat3& B);
 // The geodesic from R0 (t = 0) to R1 (t = 1): R0 Exp(t Log(R0ᵀ R1)).
 Mat3 so3_interpolate(const Mat3& R0, const Mat3& R1, double t);
 
-// Largest absolute entry of RᵀR − I; det(R) is not part of it.
+// Largest absolute entry of RᵀR − I (+∞ if an entry of R is not finite); det(R) is not part of it.
 double orthogonality_error(const Mat3& R);
 // True when R is orthonormal to within tol and det(R) > 0.
 bool is_rotation(const Mat3& R, double tol = 1e-6);
