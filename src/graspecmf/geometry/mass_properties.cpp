@@ -1,0 +1,48 @@
+#include "graspecmf/geometry/mass_properties.hpp"
+
+#include <cmath>
+
+#include "graspecmf/core/error.hpp"
+
+namespace graspecmf::geometry {
+
+MassProperties mass_properties(const TriangleMesh& mesh, double density) {
+  // Tetrahedra are taken from the bounding-box centre rather than the origin, so that the terms
+  // stay of the mesh's own size when it lies far from the origin (less cancellation).
+  const BoundingBox box = bounding_box(mesh);
+  const Vec3 origin = box.center();
+
+  double volume = 0.0;
+  Vec3 first_moment = Vec3::Zero();   // ∫ x dV about origin
+  Mat3 second_moment = Mat3::Zero();  // ∫ x xᵀ dV about origin
+  for (const Triangle& tri : mesh.triangles) {
+    const Vec3 a = mesh.vertices[tri[0]] - origin;
+    const Vec3 b = mesh.vertices[tri[1]] - origin;
+    const Vec3 c = mesh.vertices[tri[2]] - origin;
+    // Signed volume of the tetrahedron (0, a, b, c).
+    const double v = a.dot(b.cross(c)) / 6.0;
+    const Vec3 sum = a + b + c;
+    volume += v;
+    first_moment += v * sum / 4.0;
+    // ∫ x xᵀ over that tetrahedron: V/20 (a aᵀ + b bᵀ + c cᵀ + s sᵀ), s = a + b + c.
+    second_moment += (v / 20.0) * (a * a.transpose() + b * b.transpose() + c * c.transpose() +
+                                   sum * sum.transpose());
+  }
+
+  const double scale = box.extent().maxCoeff();
+  if (!std::isfinite(volume) || std::abs(volume) <= 1e-12 * scale * scale * scale) {
+    throw Error("mass_properties: the mesh encloses no volume (open or flat mesh?)");
+  }
+  const Vec3 com = first_moment / volume;
+  // Parallel-axis shift of the second moment to the centre of mass.
+  const Mat3 central = second_moment - volume * com * com.transpose();
+
+  MassProperties out;
+  out.volume = volume;
+  out.mass = density * volume;
+  out.center_of_mass = origin + com;
+  out.inertia = density * (central.trace() * Mat3::Identity() - central);
+  return out;
+}
+
+}  // namespace graspecmf::geometry

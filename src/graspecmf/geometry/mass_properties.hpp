@@ -1,6 +1,7 @@
 #pragma once
 // Volume, centre of mass and inertia tensor of a closed triangle mesh of uniform density, by the
-// divergence theorem (a signed tetrahedron from the origin per triangle).
+// divergence theorem (a signed tetrahedron per triangle, from the bounding-box centre so that a
+// mesh far from the origin keeps its accuracy).
 
 #include "graspecmf/geometry/triangle_mesh.hpp"
 
@@ -15,8 +16,9 @@ struct MassProperties {
   Mat3 inertia = Mat3::Zero();  // about the centre of mass, standard sign (positive-definite)
 };
 
-// Mass properties of a closed, consistently oriented mesh; results for an open mesh are meaningless.
-// Throws Error if the volume is zero.
+// Mass properties of a closed, consistently oriented mesh; results for an open mesh are
+// meaningless. An inward-facing mesh gives the same centre of mass and negated volume, mass and
+// inertia. Throws Error if the mesh has no triangles or its volume is zero (|V| ≤ 1e-12 × extent³).
 MassProperties mass_properties(const TriangleMesh& mesh, double density = 1.0);
 
 }  // namespace graspecmf::geometry

@@ -14,15 +14,16 @@ struct MeshTopology {
   std::size_t num_edges = 0;              // distinct undirected edges
   std::size_t num_boundary_edges = 0;     // edges with exactly one triangle
   std::size_t num_nonmanifold_edges = 0;  // edges with three or more triangles
-  std::size_t num_misoriented_edges = 0;  // two-triangle edges traversed in the same direction twice
-  std::size_t num_components = 0;         // edge-connected triangle components
-  long euler_characteristic = 0;          // V − E + F
-  bool watertight = false;                // every edge shared by exactly two triangles
-  bool consistently_oriented = false;     // watertight and no misoriented edge
+  std::size_t num_misoriented_edges =
+      0;                               // two-triangle edges traversed in the same direction twice
+  std::size_t num_components = 0;      // edge-connected triangle components
+  long euler_characteristic = 0;       // V − E + F
+  bool watertight = false;             // every edge shared by exactly two triangles
+  bool consistently_oriented = false;  // watertight and no misoriented edge
   int genus = -1;  // Σ over components of (2 − χ_c) / 2; −1 unless consistently oriented
 };
 
-// Analyses the mesh's edges (vertices are matched by index, so weld first).
+// Analyses the mesh's edges (vertices are matched by index, so weld first); the mesh must be valid.
 MeshTopology analyze_topology(const TriangleMesh& mesh);
 // Splits the mesh into its edge-connected components, each with its own compact vertex list, in
 // order of their first triangle.

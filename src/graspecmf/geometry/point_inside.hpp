@@ -6,7 +6,8 @@
 
 namespace graspecmf::geometry {
 
-// Σ solid angles / 4π of the triangles seen from q: 1 inside, 0 outside a closed outward mesh.
+// Σ solid angles / 4π of the triangles seen from q: 1 inside, 0 outside a closed outward mesh
+// (−1 inside an inward one). On the surface itself the value is not defined.
 double winding_number(const TriangleMesh& mesh, const Vec3& q);
 // winding_number(mesh, q) > 0.5.
 bool is_inside(const TriangleMesh& mesh, const Vec3& q);

@@ -12,16 +12,16 @@ namespace graspecmf::geometry {
 
 struct SurfacePoints {
   std::vector<Vec3> points;
-  std::vector<Vec3> normals;            // unit normal of the triangle each point lies on
+  std::vector<Vec3> normals;             // unit normal of the triangle each point lies on
   std::vector<std::uint32_t> triangles;  // index of that triangle
 };
 
 // Precomputes the area distribution once so that repeated draws (one per training step) are cheap.
 class SurfaceSampler {
  public:
-  // Throws Error if the mesh has zero total area.
+  // Keeps a reference: mesh must outlive the sampler. Throws Error if the mesh has zero total area.
   explicit SurfaceSampler(const TriangleMesh& mesh);
-  // n points, uniform with respect to surface area.
+  // n points, uniform with respect to surface area (zero-area triangles are never chosen).
   SurfacePoints sample(std::size_t n, Rng& rng) const;
 
  private:

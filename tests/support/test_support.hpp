@@ -1,0 +1,67 @@
+#pragma once
+// Shared by all test suites: paths of the bundled ACRONYM sample (data/acronym-sample), a scratch
+// folder per test, and whole-file read/write helpers.
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+namespace graspecmf::testing {
+
+inline std::filesystem::path sample_root() {
+  return std::filesystem::path(GRASPECMF_DATA_DIR) / "acronym-sample";
+}
+inline std::filesystem::path sample_grasp_file() {
+  return sample_root() / "grasps" / "Mug_10f6e09036350e92b3f21f1137c3c347_0.0002682457830986903.h5";
+}
+inline std::filesystem::path sample_mesh_file() {
+  return sample_root() / "meshes" / "Mug" / "10f6e09036350e92b3f21f1137c3c347.obj";
+}
+inline std::filesystem::path gripper_mesh_file() {
+  return sample_root() / "franka_gripper_collision_mesh.stl";
+}
+
+// A fresh, empty folder named after the running test and process; removed with the object.
+class ScratchDir {
+ public:
+  ScratchDir() {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    path_ = std::filesystem::path(::testing::TempDir()) /
+            ("graspecmf_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+             std::to_string(::getpid()));
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+  // Number of entries in the folder.
+  std::size_t num_files() const {
+    return static_cast<std::size_t>(std::distance(std::filesystem::directory_iterator(path_), {}));
+  }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline void write_file(const std::filesystem::path& path, const std::string& bytes) {
+  std::ofstream out(path, std::ios::binary);
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+inline std::string read_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace graspecmf::testing
