@@ -1,0 +1,36 @@
+// Reading and writing ACRONYM grasp files, and summarising an object (what `inspect` does).
+
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+#include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/data/object_summary.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+
+const fs::path kSample = fs::path(GRASPECMF_DATA_DIR) / "acronym-sample" / "grasps" /
+                         "Mug_10f6e09036350e92b3f21f1137c3c347_0.0002682457830986903.h5";
+
+void BM_ReadAcronymFile(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(graspecmf::data::read_acronym_file(kSample));
+  state.SetItemsProcessed(state.iterations() * 2000);  // grasps
+}
+BENCHMARK(BM_ReadAcronymFile)->Unit(benchmark::kMillisecond);
+
+void BM_WriteAcronymFile(benchmark::State& state) {
+  const auto record = graspecmf::data::read_acronym_file(kSample);
+  const fs::path out = fs::temp_directory_path() / "graspecmf_bench_write.h5";
+  for (auto _ : state) graspecmf::data::write_acronym_file(record, out);
+  fs::remove(out);
+  state.SetItemsProcessed(state.iterations() * 2000);
+}
+BENCHMARK(BM_WriteAcronymFile)->Unit(benchmark::kMillisecond);
+
+void BM_SummarizeObject(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(graspecmf::data::summarize_acronym_object(kSample));
+}
+BENCHMARK(BM_SummarizeObject)->Unit(benchmark::kMillisecond);
+
+}  // namespace

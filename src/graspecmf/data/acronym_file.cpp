@@ -1,0 +1,235 @@
+#include "graspecmf/data/acronym_file.hpp"
+
+#include <cmath>
+
+#include "graspecmf/core/atomic_file.hpp"
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/data/hdf5_file.hpp"
+
+namespace graspecmf::data {
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr const char* kTransforms = "grasps/transforms";
+constexpr const char* kQualities = "grasps/qualities/flex/";
+constexpr const char* kSuccess = "object_in_gripper";
+constexpr const char* kClosingLinear = "object_motion_during_closing_linear";
+constexpr const char* kClosingAngular = "object_motion_during_closing_angular";
+constexpr const char* kShakingLinear = "object_motion_during_shaking_linear";
+constexpr const char* kShakingAngular = "object_motion_during_shaking_angular";
+
+// HDF5 arrays are row-major; Eigen's default is column-major (vectors must stay column-major).
+template <int Rows, int Cols>
+using RowMajorMatrix =
+    Eigen::Matrix<double, Rows, Cols, (Cols == 1 ? Eigen::ColMajor : Eigen::RowMajor)>;
+
+std::string quality_path(const char* name) {
+  return std::string(kQualities) + name;
+}
+
+std::string shape_text(const Shape& shape) {
+  std::string text = "(";
+  for (std::size_t i = 0; i < shape.size(); ++i) text += (i ? ", " : "") + std::to_string(shape[i]);
+  return text + ")";
+}
+
+std::vector<Mat4> read_transforms(const Hdf5Reader& file, const fs::path& path) {
+  const Shape shape = file.shape(kTransforms);
+  if (shape.size() != 3 || shape[1] != 4 || shape[2] != 4) {
+    throw Error(path.string() + ": /" + kTransforms + " has shape " + shape_text(shape) +
+                ", expected (N, 4, 4)");
+  }
+  const std::vector<double> values = file.read_doubles(kTransforms);
+  std::vector<Mat4> transforms(shape[0]);
+  for (std::size_t i = 0; i < shape[0]; ++i) {
+    transforms[i] = Eigen::Map<const RowMajorMatrix<4, 4>>(&values[16 * i]);
+  }
+  return transforms;
+}
+
+template <typename T>
+void read_per_grasp(const Hdf5Reader& file, const fs::path& path, const char* name, std::size_t n,
+                    std::vector<T>& out) {
+  const std::string dataset = quality_path(name);
+  if (!file.has_dataset(dataset)) return;
+  if constexpr (std::is_same_v<T, double>) {
+    out = file.read_doubles(dataset);
+  } else {
+    out = file.read_int64s(dataset);
+  }
+  if (out.size() != n) {
+    throw Error(path.string() + ": /" + dataset + " has " + std::to_string(out.size()) +
+                " entries but there are " + std::to_string(n) + " grasps");
+  }
+}
+
+std::optional<double> read_optional_double(const Hdf5Reader& file, const std::string& name) {
+  if (!file.has_dataset(name)) return std::nullopt;
+  return file.read_double(name);
+}
+
+template <int Rows, int Cols>
+std::optional<Eigen::Matrix<double, Rows, Cols>> read_optional_matrix(const Hdf5Reader& file,
+                                                                      const fs::path& path,
+                                                                      const std::string& name) {
+  if (!file.has_dataset(name)) return std::nullopt;
+  const std::vector<double> values = file.read_doubles(name);
+  if (values.size() != static_cast<std::size_t>(Rows * Cols)) {
+    throw Error(path.string() + ": /" + name + " should hold " + std::to_string(Rows * Cols) +
+                " numbers, holds " + std::to_string(values.size()));
+  }
+  return Eigen::Map<const RowMajorMatrix<Rows, Cols>>(values.data());
+}
+
+void require_finite(const fs::path& path, const std::string& what, double value) {
+  if (!std::isfinite(value)) throw Error(path.string() + ": " + what + " is not finite");
+}
+
+void check_writable(const AcronymGraspFile& record, const fs::path& path) {
+  const std::size_t n = record.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!record.transforms[i].allFinite()) {
+      throw Error(path.string() + ": grasp " + std::to_string(i) + " has a non-finite transform");
+    }
+  }
+  if (record.qualities) {
+    const GraspQualities& q = *record.qualities;
+    for (const std::size_t size : {q.object_in_gripper.size(), q.motion_closing_linear.size(),
+                                   q.motion_closing_angular.size(), q.motion_shaking_linear.size(),
+                                   q.motion_shaking_angular.size()}) {
+      if (size != 0 && size != n) {
+        throw Error(path.string() + ": a quality array has " + std::to_string(size) +
+                    " entries but there are " + std::to_string(n) + " grasps");
+      }
+    }
+  }
+  require_finite(path, "object scale", record.object.scale);
+  if (record.object.file.empty()) throw Error(path.string() + ": object file name is empty");
+}
+
+template <typename T>
+void write_per_grasp(Hdf5Writer& writer, const char* name, const std::vector<T>& values) {
+  if (values.empty()) return;
+  if constexpr (std::is_same_v<T, double>) {
+    writer.write_doubles(quality_path(name), values, {values.size()});
+  } else {
+    writer.write_int64s(quality_path(name), values, {values.size()});
+  }
+}
+
+void write_optional_double(Hdf5Writer& writer, const std::string& name,
+                           const std::optional<double>& value) {
+  if (value) writer.write_double(name, *value);
+}
+
+template <typename Matrix>
+void write_matrix(Hdf5Writer& writer, const std::string& name, const Matrix& m,
+                  const Shape& shape) {
+  std::vector<double> values(static_cast<std::size_t>(m.size()));
+  Eigen::Map<RowMajorMatrix<Matrix::RowsAtCompileTime, Matrix::ColsAtCompileTime>> row_major(
+      values.data());
+  row_major = m;
+  writer.write_doubles(name, values, shape);
+}
+
+}  // namespace
+
+std::size_t AcronymGraspFile::num_successful() const {
+  if (!qualities) return 0;
+  std::size_t count = 0;
+  for (const std::int64_t label : qualities->object_in_gripper) count += label != 0;
+  return count;
+}
+
+std::vector<lie::Pose> AcronymGraspFile::successful_grasps() const {
+  std::vector<lie::Pose> grasps;
+  if (!qualities) return grasps;
+  for (std::size_t i = 0; i < transforms.size(); ++i) {
+    if (qualities->object_in_gripper[i] != 0)
+      grasps.push_back(lie::Pose::from_matrix(transforms[i]));
+  }
+  return grasps;
+}
+
+AcronymGraspFile read_acronym_file(const fs::path& path) {
+  const Hdf5Reader file(path);
+  for (const char* required : {kTransforms, "object/file", "object/scale"}) {
+    if (!file.has_dataset(required)) {
+      throw Error(path.string() + ": not an ACRONYM grasp file (no /" + std::string(required) +
+                  ")");
+    }
+  }
+  AcronymGraspFile record;
+  record.transforms = read_transforms(file, path);
+  const std::size_t n = record.transforms.size();
+  if (file.has_dataset(quality_path(kSuccess))) {
+    GraspQualities q;
+    read_per_grasp(file, path, kSuccess, n, q.object_in_gripper);
+    read_per_grasp(file, path, kClosingLinear, n, q.motion_closing_linear);
+    read_per_grasp(file, path, kClosingAngular, n, q.motion_closing_angular);
+    read_per_grasp(file, path, kShakingLinear, n, q.motion_shaking_linear);
+    read_per_grasp(file, path, kShakingAngular, n, q.motion_shaking_angular);
+    record.qualities = std::move(q);
+  }
+  if (file.has_dataset("gripper/type")) record.gripper_type = file.read_string("gripper/type");
+  record.gripper_configuration = read_optional_double(file, "gripper/configuration");
+
+  AcronymObjectInfo& object = record.object;
+  object.file = file.read_string("object/file");
+  object.scale = file.read_double("object/scale");
+  if (!std::isfinite(object.scale) || object.scale <= 0) {
+    throw Error(path.string() + ": /object/scale must be a positive number");
+  }
+  object.density = read_optional_double(file, "object/density");
+  object.friction = read_optional_double(file, "object/friction");
+  object.mass = read_optional_double(file, "object/mass");
+  object.volume = read_optional_double(file, "object/volume");
+  object.com = read_optional_matrix<3, 1>(file, path, "object/com");
+  object.inertia = read_optional_matrix<3, 3>(file, path, "object/inertia");
+  return record;
+}
+
+void write_acronym_file(const AcronymGraspFile& record, const fs::path& path) {
+  check_writable(record, path);
+  write_atomically(path, [&](const fs::path& tmp) {
+    Hdf5Writer writer(tmp);
+    const std::size_t n = record.size();
+    std::vector<double> transforms(16 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      Eigen::Map<RowMajorMatrix<4, 4>> row_major(&transforms[16 * i]);
+      row_major = record.transforms[i];
+    }
+    writer.write_doubles(kTransforms, transforms, {n, 4, 4});
+    if (record.qualities) {
+      const GraspQualities& q = *record.qualities;
+      write_per_grasp(writer, kSuccess, q.object_in_gripper);
+      write_per_grasp(writer, kClosingAngular, q.motion_closing_angular);
+      write_per_grasp(writer, kClosingLinear, q.motion_closing_linear);
+      write_per_grasp(writer, kShakingAngular, q.motion_shaking_angular);
+      write_per_grasp(writer, kShakingLinear, q.motion_shaking_linear);
+    }
+    if (record.gripper_configuration) {
+      writer.write_doubles("gripper/configuration", {*record.gripper_configuration}, {1});
+    }
+    writer.write_string("gripper/type", record.gripper_type);
+    const AcronymObjectInfo& object = record.object;
+    if (object.com) write_matrix(writer, "object/com", *object.com, {3});
+    write_optional_double(writer, "object/density", object.density);
+    writer.write_string("object/file", object.file);
+    write_optional_double(writer, "object/friction", object.friction);
+    if (object.inertia) write_matrix(writer, "object/inertia", *object.inertia, {3, 3});
+    write_optional_double(writer, "object/mass", object.mass);
+    writer.write_double("object/scale", object.scale);
+    write_optional_double(writer, "object/volume", object.volume);
+    writer.close();
+  });
+}
+
+Mat3 standard_inertia(const Mat3& acronym_inertia) {
+  Mat3 standard = -acronym_inertia;
+  standard.diagonal() = acronym_inertia.diagonal();
+  return standard;
+}
+
+}  // namespace graspecmf::data

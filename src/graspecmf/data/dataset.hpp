@@ -1,0 +1,68 @@
+#pragma once
+// An ACRONYM-style dataset folder: grasps/*.h5 (one file per object) plus a mesh root holding the
+// meshes the files name. Scanning is cheap (labels only); meshes are loaded per object on demand.
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/geometry/triangle_mesh.hpp"
+
+namespace graspecmf::data {
+
+struct DatasetOptions {
+  std::filesystem::path mesh_root;   // empty: the dataset root itself
+  std::size_t min_successful = 100;  // objects with fewer successful grasps are skipped
+};
+
+struct ObjectEntry {
+  std::string name;  // the grasp file's stem
+  std::filesystem::path grasp_file;
+  std::filesystem::path mesh_file;
+  double scale = 1.0;
+  std::size_t num_grasps = 0;
+  std::size_t num_successful = 0;
+};
+
+struct SkippedObject {
+  std::string name;
+  std::string reason;
+};
+
+// An object ready for training or evaluation: metric mesh and its successful grasps.
+struct GraspObject {
+  std::string name;
+  geometry::TriangleMesh mesh;    // raw mesh × scale, in the grasp file's frame
+  std::vector<lie::Pose> grasps;  // successful grasps only
+};
+
+// Where the ACRONYM layout puts the mesh root for a grasp file: the folder above grasps/.
+std::filesystem::path default_mesh_root(const std::filesystem::path& grasp_file);
+// The mesh file an ACRONYM record names, resolved against a mesh root.
+std::filesystem::path resolve_mesh_path(const std::filesystem::path& mesh_root,
+                                        const std::string& object_file);
+
+class AcronymDataset {
+ public:
+  // Scans root/grasps/*.h5 in name order. Unreadable files, missing meshes and objects with fewer
+  // than min_successful successful grasps are skipped with a reason. Throws Error if root/grasps
+  // does not exist or no object is usable.
+  static AcronymDataset open(const std::filesystem::path& root, const DatasetOptions& options = {});
+
+  const std::vector<ObjectEntry>& objects() const { return objects_; }
+  const std::vector<SkippedObject>& skipped() const { return skipped_; }
+  // The names of all usable objects, in scan order.
+  std::vector<std::string> names() const;
+  // The entries with these names, in this order; throws Error for a name that is not usable.
+  std::vector<ObjectEntry> select(const std::vector<std::string>& names) const;
+  // Reads the object's mesh (scaled to metres) and its successful grasps.
+  static GraspObject load(const ObjectEntry& entry);
+
+ private:
+  std::vector<ObjectEntry> objects_;
+  std::vector<SkippedObject> skipped_;
+};
+
+}  // namespace graspecmf::data
