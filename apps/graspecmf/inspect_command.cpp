@@ -1,0 +1,186 @@
+#include "inspect_command.hpp"
+
+#include <fmt/format.h>
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "graspecmf/data/object_summary.hpp"
+
+namespace graspecmf::apps {
+namespace {
+
+struct InspectOptions {
+  std::string grasp_file;
+  std::string mesh_root;
+  bool json = false;
+};
+
+nlohmann::json vec_json(const Eigen::Vector3d& v) {
+  return {v.x(), v.y(), v.z()};
+}
+
+double relative_difference(double computed, double stored) {
+  return std::abs(computed - stored) / std::max(std::abs(stored), 1e-300);
+}
+
+// Frobenius-norm difference of two inertia tensors relative to the stored one.
+double relative_difference(const Eigen::Matrix3d& computed, const Eigen::Matrix3d& stored) {
+  return (computed - stored).norm() / std::max(stored.norm(), 1e-300);
+}
+
+// Distance between two points relative to the object's size (bounding-box diagonal).
+double relative_offset(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double size) {
+  return (a - b).norm() / size;
+}
+
+nlohmann::json to_json(const data::ObjectSummary& s) {
+  const data::AcronymGraspFile& r = s.record;
+  const data::AcronymObjectInfo& o = r.object;
+  nlohmann::json j;
+  j["grasp_file"] = s.grasp_file.string();
+  j["mesh_file"] = s.mesh_file.string();
+  j["object"] = {{"file", o.file}, {"scale", o.scale}};
+  for (const auto& [key, value] : {std::pair{"density", o.density},
+                                   {"friction", o.friction},
+                                   {"mass", o.mass},
+                                   {"volume", o.volume}}) {
+    j["object"][key] = value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+  }
+  j["object"]["com"] = o.com ? vec_json(*o.com) : nlohmann::json(nullptr);
+  j["gripper"] = {
+      {"type", r.gripper_type},
+      {"configuration", r.gripper_configuration ? nlohmann::json(*r.gripper_configuration)
+                                                : nlohmann::json(nullptr)}};
+  j["grasps"] = {{"count", r.size()},
+                 {"successful", r.num_successful()},
+                 {"labelled", r.qualities.has_value()},
+                 {"max_rigidity_error", s.max_rigidity_error}};
+  const geometry::MeshTopology& t = s.topology;
+  j["mesh"] = {
+      {"vertices", s.num_vertices},
+      {"triangles", s.num_triangles},
+      {"watertight", t.watertight},
+      {"consistently_oriented", t.consistently_oriented},
+      {"boundary_edges", t.num_boundary_edges},
+      {"nonmanifold_edges", t.num_nonmanifold_edges},
+      {"components", t.num_components},
+      {"genus", t.consistently_oriented ? nlohmann::json(t.genus) : nlohmann::json(nullptr)},
+      {"bbox_min", vec_json(s.bounding_box.min)},
+      {"bbox_max", vec_json(s.bounding_box.max)}};
+  nlohmann::json& check = j["mesh"]["mass_properties"];
+  if (!s.mass_properties) {
+    check = nullptr;
+    return j;
+  }
+  const geometry::MassProperties& m = *s.mass_properties;
+  check = {{"volume", m.volume},
+           {"mass", m.mass},
+           {"center_of_mass", vec_json(m.center_of_mass)},
+           {"inertia",
+            {vec_json(m.inertia.row(0)), vec_json(m.inertia.row(1)), vec_json(m.inertia.row(2))}}};
+  const double size = s.bounding_box.extent().norm();
+  if (o.volume) check["volume_relative_difference"] = relative_difference(m.volume, *o.volume);
+  if (o.mass) check["mass_relative_difference"] = relative_difference(m.mass, *o.mass);
+  if (o.com) check["com_offset_relative_to_size"] = relative_offset(m.center_of_mass, *o.com, size);
+  if (o.inertia) {
+    check["inertia_relative_difference"] =
+        relative_difference(m.inertia, data::standard_inertia(*o.inertia));
+  }
+  return j;
+}
+
+std::string vec_text(const Eigen::Vector3d& v) {
+  return fmt::format("({:.6g}, {:.6g}, {:.6g})", v.x(), v.y(), v.z());
+}
+
+void print_text(const data::ObjectSummary& s, std::ostream& out) {
+  const data::AcronymGraspFile& r = s.record;
+  const data::AcronymObjectInfo& o = r.object;
+  const geometry::MeshTopology& t = s.topology;
+  out << fmt::format("grasp file       {}\n", s.grasp_file.string());
+  out << fmt::format("object file      {}\n", o.file);
+  out << fmt::format("mesh             {}\n", s.mesh_file.string());
+  out << fmt::format("scale            {:.10g}\n", o.scale);
+  out << fmt::format("gripper          {}{}\n", r.gripper_type,
+                     r.gripper_configuration
+                         ? fmt::format(" (finger joint {:g} m)", *r.gripper_configuration)
+                         : "");
+  if (r.qualities) {
+    out << fmt::format(
+        "grasps           {} ({} successful, {:.1f} %)\n", r.size(), r.num_successful(),
+        r.size() ? 100.0 * static_cast<double>(r.num_successful()) / static_cast<double>(r.size())
+                 : 0.0);
+  } else {
+    out << fmt::format("grasps           {} (no success labels)\n", r.size());
+  }
+  out << fmt::format("rigid transforms {} (max deviation {:.2g})\n",
+                     s.max_rigidity_error < 1e-6 ? "all" : "NOT all", s.max_rigidity_error);
+  out << fmt::format("mesh             {} vertices, {} triangles, {} component(s)\n",
+                     s.num_vertices, s.num_triangles, t.num_components);
+  if (t.consistently_oriented) {
+    out << fmt::format("watertight       yes, consistently oriented, genus {}\n", t.genus);
+  } else {
+    out << fmt::format("watertight       {} ({} boundary, {} non-manifold, {} misoriented edges)\n",
+                       t.watertight ? "yes but inconsistently oriented" : "no",
+                       t.num_boundary_edges, t.num_nonmanifold_edges, t.num_misoriented_edges);
+  }
+  out << fmt::format("bbox min         {} m\n", vec_text(s.bounding_box.min));
+  out << fmt::format("bbox max         {} m\n", vec_text(s.bounding_box.max));
+  if (o.density) out << fmt::format("density          {:g} kg/m³\n", *o.density);
+  if (!s.mass_properties) {
+    out << "volume           not computed: the mesh is not a closed, oriented surface\n";
+    return;
+  }
+  const geometry::MassProperties& m = *s.mass_properties;
+  out << fmt::format("volume           {:.6g} m³ ({})\n", m.volume,
+                     m.volume > 0 ? "outward normals" : "INWARD normals");
+  if (o.volume) {
+    out << fmt::format("volume (file)    {:.6g} m³ (relative difference {:.1e})\n", *o.volume,
+                       relative_difference(m.volume, *o.volume));
+  }
+  out << fmt::format("mass             {:.6g} kg\n", m.mass);
+  if (o.mass) {
+    out << fmt::format("mass (file)      {:.6g} kg (relative difference {:.1e})\n", *o.mass,
+                       relative_difference(m.mass, *o.mass));
+  }
+  out << fmt::format("centre of mass   {} m\n", vec_text(m.center_of_mass));
+  if (o.com) {
+    out << fmt::format("com (file)       {} m (offset {:.1e} of the object size)\n",
+                       vec_text(*o.com),
+                       relative_offset(m.center_of_mass, *o.com, s.bounding_box.extent().norm()));
+  }
+  out << fmt::format("inertia diagonal {} kg m² (about the centre of mass)\n",
+                     vec_text(m.inertia.diagonal()));
+  if (o.inertia) {
+    out << fmt::format("inertia (file)   {} kg m² (relative difference {:.1e})\n",
+                       vec_text(o.inertia->diagonal()),
+                       relative_difference(m.inertia, data::standard_inertia(*o.inertia)));
+  }
+}
+
+}  // namespace
+
+void add_inspect_command(CLI::App& app) {
+  auto options = std::make_shared<InspectOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "inspect", "Summarise an ACRONYM grasp file and check it against its mesh");
+  cmd->add_option("file", options->grasp_file, "ACRONYM grasp file (.h5)")->required();
+  cmd->add_option("--mesh-root", options->mesh_root,
+                  "Folder the file's object/file path is relative to (default: the folder above "
+                  "the file's grasps/ folder)");
+  cmd->add_flag("--json", options->json, "Print the summary as JSON");
+  cmd->callback([options] {
+    const data::ObjectSummary summary =
+        data::summarize_acronym_object(options->grasp_file, options->mesh_root);
+    if (options->json) {
+      std::cout << to_json(summary).dump(2) << "\n";
+    } else {
+      print_text(summary, std::cout);
+    }
+  });
+}
+
+}  // namespace graspecmf::apps

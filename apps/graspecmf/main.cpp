@@ -1,1 +1,26 @@
-int main() { return 0; }
+// The graspecmf command line: parses arguments, dispatches to a subcommand, and turns any error
+// into one line on stderr with exit code 1.
+
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <string>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/core/version.hpp"
+#include "inspect_command.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app("graspecmf: SO(3)-equivariant 6-DoF grasp generation (GraspECMF)", "graspecmf");
+  app.set_version_flag("--version", std::string("graspecmf ") + graspecmf::kVersion);
+  app.require_subcommand(1);
+  graspecmf::apps::add_inspect_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,156 @@
+// End-to-end tests of the graspecmf command: exit codes, output and error lines.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+
+#include "graspecmf/data/hdf5_file.hpp"
+#include "test_support.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using graspecmf::testing::read_file;
+using graspecmf::testing::sample_grasp_file;
+using graspecmf::testing::sample_mesh_file;
+using graspecmf::testing::ScratchDir;
+
+struct CliRun {
+  int exit_code;
+  std::string out;  // stdout
+  std::string err;  // stderr
+};
+
+CliRun run(const std::string& args, const ScratchDir& dir) {
+  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
+  const std::string command =
+      std::string(GRASPECMF_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(command.c_str());
+  CliRun result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
+  fs::remove(out);
+  fs::remove(err);
+  return result;
+}
+
+// A failed run prints exactly one line on stderr, starting with "error:".
+void expect_one_error_line(const CliRun& r, const std::string& fragment) {
+  EXPECT_NE(r.exit_code, 0);
+  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
+}
+
+TEST(Cli, VersionAndHelp) {
+  ScratchDir dir;
+  const CliRun version = run("--version", dir);
+  EXPECT_EQ(version.exit_code, 0);
+  EXPECT_EQ(version.out.rfind("graspecmf ", 0), 0u) << version.out;
+  const CliRun help = run("inspect --help", dir);
+  EXPECT_EQ(help.exit_code, 0);
+  EXPECT_NE(help.out.find("--mesh-root"), std::string::npos);
+  EXPECT_NE(run("", dir).exit_code, 0);
+  EXPECT_NE(run("no-such-command", dir).exit_code, 0);
+}
+
+TEST(Cli, InspectSampleMug) {
+  ScratchDir dir;
+  const CliRun r = run("inspect " + sample_grasp_file().string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("2000 (1290 successful"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("genus 1"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("rigid transforms all"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("8.72532e-05"), std::string::npos) << r.out;
+}
+
+TEST(Cli, InspectJsonCarriesTheSameNumbers) {
+  ScratchDir dir;
+  const CliRun r = run("inspect --json " + sample_grasp_file().string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["grasps"]["count"], 2000);
+  EXPECT_EQ(j["grasps"]["successful"], 1290);
+  EXPECT_LT(j["grasps"]["max_rigidity_error"].get<double>(), 2e-10);
+  EXPECT_EQ(j["mesh"]["vertices"], 1167);
+  EXPECT_EQ(j["mesh"]["triangles"], 2334);
+  EXPECT_EQ(j["mesh"]["watertight"], true);
+  EXPECT_EQ(j["mesh"]["genus"], 1);
+  const auto& mass = j["mesh"]["mass_properties"];
+  EXPECT_LT(mass["volume_relative_difference"].get<double>(), 1e-4);
+  EXPECT_LT(mass["com_offset_relative_to_size"].get<double>(), 1e-4);
+  EXPECT_LT(mass["mass_relative_difference"].get<double>(), 1e-4);
+  EXPECT_LT(mass["inertia_relative_difference"].get<double>(), 1e-4);
+  EXPECT_NEAR(j["mesh"]["bbox_min"][1].get<double>(), -0.0630, 1e-4);
+  EXPECT_NEAR(j["mesh"]["bbox_max"][2].get<double>(), 0.1525, 1e-4);
+  EXPECT_EQ(j["object"]["volume"], 8.72532e-05);
+}
+
+TEST(Cli, MissingFile) {
+  ScratchDir dir;
+  expect_one_error_line(run("inspect " + (dir / "missing.h5").string(), dir), "no such file");
+}
+
+TEST(Cli, NotAnHdf5File) {
+  ScratchDir dir;
+  std::ofstream(dir / "fake.h5") << "plain text";
+  expect_one_error_line(run("inspect " + (dir / "fake.h5").string(), dir), "not an HDF5 file");
+}
+
+TEST(Cli, HdfFileWithoutTransforms) {
+  ScratchDir dir;
+  {
+    graspecmf::data::Hdf5Writer writer(dir / "labels_only.h5");
+    writer.write_int64s("grasps/qualities/flex/object_in_gripper", {1, 0, 1}, {3});
+    writer.close();
+  }
+  expect_one_error_line(run("inspect " + (dir / "labels_only.h5").string(), dir),
+                        "no /grasps/transforms");
+}
+
+// Copies the sample into a dataset folder whose mesh is replaced by `mesh_text`.
+fs::path dataset_with_mesh(const ScratchDir& dir, const std::string& mesh_text) {
+  fs::create_directories(dir / "set" / "grasps");
+  fs::create_directories(dir / "set" / "meshes" / "Mug");
+  const fs::path grasps = dir / "set" / "grasps" / sample_grasp_file().filename();
+  fs::copy_file(sample_grasp_file(), grasps);
+  std::ofstream(dir / "set" / "meshes" / "Mug" / sample_mesh_file().filename()) << mesh_text;
+  return grasps;
+}
+
+TEST(Cli, TruncatedObj) {
+  ScratchDir dir;
+  const std::string mesh = read_file(sample_mesh_file());
+  const fs::path grasps = dataset_with_mesh(dir, mesh.substr(0, mesh.size() * 6 / 10));
+  expect_one_error_line(run("inspect " + grasps.string(), dir), "truncated");
+}
+
+TEST(Cli, MeshWithNan) {
+  ScratchDir dir;
+  const fs::path grasps = dataset_with_mesh(
+      dir, "v 0 0 0\nv 1 0 0\nv 0 nan 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  expect_one_error_line(run("inspect " + grasps.string(), dir), "finite");
+}
+
+TEST(Cli, EmptyMesh) {
+  ScratchDir dir;
+  const fs::path grasps = dataset_with_mesh(dir, "");
+  expect_one_error_line(run("inspect " + grasps.string(), dir), "no faces");
+}
+
+TEST(Cli, MeshRootOption) {
+  ScratchDir dir;
+  fs::create_directories(dir / "elsewhere");
+  fs::copy_file(sample_grasp_file(), dir / "elsewhere" / "mug.h5");
+  expect_one_error_line(run("inspect " + (dir / "elsewhere" / "mug.h5").string(), dir),
+                        "does not exist");
+  const CliRun ok = run("inspect " + (dir / "elsewhere" / "mug.h5").string() + " --mesh-root " +
+                            graspecmf::testing::sample_root().string(),
+                        dir);
+  EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
+}  // namespace
