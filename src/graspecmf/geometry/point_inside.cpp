@@ -23,6 +23,10 @@ double winding_number(const TriangleMesh& mesh, const Vec3& q) {
 }
 
 bool is_inside(const TriangleMesh& mesh, const Vec3& q) {
+  // A point outside the bounding box is outside; the O(V) box test is far cheaper than the
+  // O(F) solid-angle sum.
+  const BoundingBox box = bounding_box(mesh);
+  if ((q.array() < box.min.array()).any() || (q.array() > box.max.array()).any()) return false;
   return winding_number(mesh, q) > 0.5;
 }
 
