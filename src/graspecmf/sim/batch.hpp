@@ -1,0 +1,20 @@
+#pragma once
+// Labelling many grasps of one object on several threads (one MuJoCo model + data per thread).
+// Results do not depend on the thread count: every trial starts from a reset state.
+
+#include <functional>
+#include <vector>
+
+#include "graspecmf/sim/grasp_trial.hpp"
+
+namespace graspecmf::sim {
+
+// Called after each finished trial with (finished, total), from one thread at a time.
+using ProgressCallback = std::function<void(std::size_t finished, std::size_t total)>;
+
+// Runs a trial per grasp on `threads` threads (≥ 1); results are in grasp order.
+std::vector<TrialResult> run_trials(const SceneObject& object, const std::vector<lie::Pose>& grasps,
+                                    const TrialConfig& config, int threads,
+                                    const ProgressCallback& progress = {});
+
+}  // namespace graspecmf::sim

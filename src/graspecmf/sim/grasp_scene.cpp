@@ -1,0 +1,113 @@
+#include "graspecmf/sim/grasp_scene.hpp"
+
+#include <fmt/format.h>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/gripper/panda.hpp"
+
+namespace graspecmf::sim {
+namespace {
+
+// Collision filtering: hand geoms (type 1, affinity 0) touch only object geoms (type 0,
+// affinity 1), so fingers never collide with each other or with the palm.
+constexpr const char* kHandCollision = R"(contype="1" conaffinity="0")";
+constexpr const char* kObjectCollision = R"(contype="0" conaffinity="1")";
+
+std::string vec_text(const Eigen::Vector3d& v) {
+  return fmt::format("{:.17g} {:.17g} {:.17g}", v.x(), v.y(), v.z());
+}
+
+std::string mesh_asset(const geometry::TriangleMesh& part, std::size_t index) {
+  std::string vertices;
+  for (const auto& v : part.vertices) vertices += vec_text(v) + " ";
+  return fmt::format(R"(    <mesh name="part{}" vertex="{}"/>)"
+                     "\n",
+                     index, vertices);
+}
+
+std::string box_geom(const geometry::OrientedBox& box, const TrialConfig& config) {
+  return fmt::format(
+      R"(<geom type="box" pos="{}" size="{}" friction="{} {} 0.0001" condim="4" {} mass="0"/>)",
+      vec_text(box.pose.p), vec_text(box.half_extents), config.friction, config.torsional_friction,
+      kHandCollision);
+}
+
+// A finger body on a slide along `axis`, carrying the boxes of one finger at zero opening.
+std::string finger_body(const char* name, const char* axis,
+                        const std::vector<geometry::OrientedBox>& boxes, std::size_t first,
+                        const TrialConfig& config) {
+  std::string geoms;
+  for (std::size_t i = first; i < first + 3; ++i)
+    geoms += "        " + box_geom(boxes[i], config) + "\n";
+  return fmt::format(
+      R"(      <body name="{0}">
+        <joint name="{0}" type="slide" axis="{1}" range="0 {2}" limited="true" damping="{3}"/>
+        <inertial pos="0 0 0.09" mass="{4}" diaginertia="1e-5 1e-5 1e-5"/>
+{5}      </body>
+)",
+      name, axis, 0.5 * gripper::panda::kMaxOpening, config.finger_damping, config.finger_mass,
+      geoms);
+}
+
+}  // namespace
+
+std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& config) {
+  validate(config);
+  if (object.parts.empty()) throw Error("grasp scene: the object has no convex parts");
+  if (!(object.mass > 0.0)) throw Error("grasp scene: the object mass must be positive");
+
+  std::string assets, object_geoms;
+  for (std::size_t i = 0; i < object.parts.size(); ++i) {
+    assets += mesh_asset(object.parts[i], i);
+    object_geoms += fmt::format(
+        R"(      <geom type="mesh" mesh="part{}" friction="{} {} 0.0001" condim="4" {} mass="0"/>)"
+        "\n",
+        i, config.friction, config.torsional_friction, kObjectCollision);
+  }
+  const Eigen::Matrix3d& I = object.inertia;
+  const std::vector<geometry::OrientedBox> boxes = gripper::collision_boxes(0.0);
+  const double limit = config.finger_force;
+  return fmt::format(
+      R"(<mujoco model="graspecmf_grasp_trial">
+  <compiler angle="radian" inertiafromgeom="false" boundmass="1e-6" boundinertia="1e-12"/>
+  <option timestep="{timestep}" gravity="0 0 0" cone="elliptic" impratio="10" integrator="implicit"/>
+  <default><geom solref="{contact_timeconst} 1" solimp="0.95 0.99 0.001"/></default>
+  <size njmax="2000" nconmax="500"/>
+  <asset>
+{assets}  </asset>
+  <worldbody>
+    <body name="{object_body}">
+      <freejoint/>
+      <inertial pos="{com}" mass="{mass}" fullinertia="{ixx:.17g} {iyy:.17g} {izz:.17g} {ixy:.17g} {ixz:.17g} {iyz:.17g}"/>
+{object_geoms}    </body>
+    <body name="{target_body}" mocap="true"/>
+    <body name="{hand_body}">
+      <freejoint/>
+      <inertial pos="0 0 0.04" mass="{hand_mass}" diaginertia="2.5e-3 1e-3 2.5e-3"/>
+      {palm}
+{left}{right}    </body>
+  </worldbody>
+  <equality>
+    <weld body1="{target_body}" body2="{hand_body}" solref="0.01 1"/>
+  </equality>
+  <actuator>
+    <position joint="{left_name}" kp="{gain}" forcelimited="true" forcerange="{lo} {hi}"/>
+    <position joint="{right_name}" kp="{gain}" forcelimited="true" forcerange="{lo} {hi}"/>
+  </actuator>
+</mujoco>
+)",
+      fmt::arg("timestep", config.timestep),
+      fmt::arg("contact_timeconst", config.contact_timeconst), fmt::arg("assets", assets),
+      fmt::arg("object_body", kObjectBody), fmt::arg("com", vec_text(object.center_of_mass)),
+      fmt::arg("mass", object.mass), fmt::arg("ixx", I(0, 0)), fmt::arg("iyy", I(1, 1)),
+      fmt::arg("izz", I(2, 2)), fmt::arg("ixy", I(0, 1)), fmt::arg("ixz", I(0, 2)),
+      fmt::arg("iyz", I(1, 2)), fmt::arg("object_geoms", object_geoms),
+      fmt::arg("target_body", kTargetBody), fmt::arg("hand_body", kHandBody),
+      fmt::arg("hand_mass", config.hand_mass), fmt::arg("palm", box_geom(boxes[0], config)),
+      fmt::arg("left", finger_body(kLeftFinger, "-1 0 0", boxes, 1, config)),
+      fmt::arg("right", finger_body(kRightFinger, "1 0 0", boxes, 4, config)),
+      fmt::arg("left_name", kLeftFinger), fmt::arg("right_name", kRightFinger),
+      fmt::arg("gain", config.finger_gain), fmt::arg("lo", -limit), fmt::arg("hi", limit));
+}
+
+}  // namespace graspecmf::sim

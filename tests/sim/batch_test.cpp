@@ -1,0 +1,51 @@
+#include "graspecmf/sim/batch.hpp"
+
+#include <gtest/gtest.h>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/mass_properties.hpp"
+#include "graspecmf/geometry/oriented_box.hpp"
+
+namespace graspecmf::sim {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+TEST(RunTrials, SameLabelsOnOneAndTwoThreads) {
+  geometry::OrientedBox box;
+  box.pose.p = Vec3(0, 0, 0.04);
+  box.half_extents = Vec3(0.025, 0.025, 0.04);
+  SceneObject object;
+  object.parts = {geometry::box_mesh(box)};
+  const geometry::MassProperties mp = geometry::mass_properties(object.parts[0], 150.0);
+  object.mass = mp.mass;
+  object.center_of_mass = mp.center_of_mass;
+  object.inertia = mp.inertia;
+
+  std::vector<lie::Pose> grasps;
+  for (int i = 0; i < 6; ++i) {
+    lie::Pose g;
+    g.R = lie::so3_exp(Vec3(M_PI, 0, 0)) * lie::so3_exp(Vec3(0, 0, 0.3 * i));
+    g.p = Vec3(0.01 * (i % 3) - 0.01, 0, 0.05 + 0.1034);
+    grasps.push_back(g);
+  }
+  std::size_t calls = 0;
+  const auto one =
+      run_trials(object, grasps, TrialConfig{}, 1, [&](std::size_t done, std::size_t total) {
+        ++calls;
+        EXPECT_EQ(total, grasps.size());
+        EXPECT_EQ(done, calls);
+      });
+  const auto two = run_trials(object, grasps, TrialConfig{}, 2);
+  EXPECT_EQ(calls, grasps.size());
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].success, two[i].success) << i;
+    EXPECT_EQ(one[i].shaking_linear, two[i].shaking_linear) << i;
+    EXPECT_EQ(one[i].closing_angular, two[i].closing_angular) << i;
+  }
+  EXPECT_THROW(run_trials(object, grasps, TrialConfig{}, 0), Error);
+}
+
+}  // namespace
+}  // namespace graspecmf::sim

@@ -1,0 +1,83 @@
+#include "graspecmf/sim/grasp_trial.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/mass_properties.hpp"
+#include "graspecmf/geometry/oriented_box.hpp"
+
+namespace graspecmf::sim {
+namespace {
+
+using Vec3 = Eigen::Vector3d;
+
+// A 5 × 5 × 8 cm box of 150 kg/m³ centred at (0, 0, 0.04), as one convex part.
+SceneObject box_object() {
+  geometry::OrientedBox box;
+  box.pose.p = Vec3(0, 0, 0.04);
+  box.half_extents = Vec3(0.025, 0.025, 0.04);
+  SceneObject object;
+  object.parts = {geometry::box_mesh(box)};
+  const geometry::MassProperties mp = geometry::mass_properties(object.parts[0], 150.0);
+  object.mass = mp.mass;
+  object.center_of_mass = mp.center_of_mass;
+  object.inertia = mp.inertia;
+  return object;
+}
+
+// Top-down grasp (approach −z) with the pads at height z, fingers closing along world x.
+lie::Pose top_down_grasp(double z, double x_offset = 0.0) {
+  lie::Pose grasp;
+  grasp.R = lie::so3_exp(Vec3(M_PI, 0, 0));  // gripper z → world −z
+  grasp.p = Vec3(x_offset, 0, z + 0.1034);
+  return grasp;
+}
+
+TEST(GraspTrial, HoldsABoxGraspedAcrossItsMiddle) {
+  GraspSimulator sim(box_object(), TrialConfig{});
+  const TrialResult r = sim.run(top_down_grasp(0.05));
+  EXPECT_FALSE(r.unstable);
+  EXPECT_TRUE(r.success);
+  EXPECT_NEAR(r.final_opening, 0.05, 0.002);
+  EXPECT_LT(r.shaking_linear, 0.01);
+}
+
+TEST(GraspTrial, FailsWhenTheHandClosesOnAir) {
+  GraspSimulator sim(box_object(), TrialConfig{});
+  const TrialResult r = sim.run(top_down_grasp(0.05, 0.15));
+  EXPECT_FALSE(r.unstable);
+  EXPECT_FALSE(r.success);
+  EXPECT_LT(r.final_opening, 0.001);
+}
+
+TEST(GraspTrial, FailsWhenOnlyTheFingertipsCatchAnEdge) {
+  // Pads 3.5 cm beside the box centre: one finger lands on top of the box, nothing is squeezed.
+  GraspSimulator sim(box_object(), TrialConfig{});
+  EXPECT_FALSE(sim.run(top_down_grasp(0.05, 0.045)).success);
+}
+
+TEST(GraspTrial, RepeatedTrialsAreIdentical) {
+  GraspSimulator sim(box_object(), TrialConfig{});
+  const TrialResult a = sim.run(top_down_grasp(0.05, 0.01));
+  sim.run(top_down_grasp(0.05, 0.15));
+  const TrialResult b = sim.run(top_down_grasp(0.05, 0.01));
+  EXPECT_EQ(a.success, b.success);
+  EXPECT_EQ(a.shaking_linear, b.shaking_linear);
+  EXPECT_EQ(a.closing_angular, b.closing_angular);
+}
+
+TEST(TrialConfig, JsonRoundTripAndValidation) {
+  TrialConfig config;
+  config.finger_force = 42.0;
+  const TrialConfig copy = trial_config_from_json(to_json(config));
+  EXPECT_EQ(copy.finger_force, 42.0);
+  EXPECT_EQ(to_json(copy), to_json(config));
+  EXPECT_THROW(trial_config_from_json(nlohmann::json{{"finger_force", -1.0}}), Error);
+  EXPECT_THROW(trial_config_from_json(nlohmann::json{{"no_such_parameter", 1.0}}), Error);
+  EXPECT_THROW(trial_config_from_json(nlohmann::json{{"timestep", "fast"}}), Error);
+}
+
+}  // namespace
+}  // namespace graspecmf::sim
