@@ -17,6 +17,18 @@ fs::path resolve_mesh_path(const fs::path& mesh_root, const std::string& object_
   return mesh_root / fs::path(object_file);
 }
 
+fs::path find_object_mesh(const fs::path& grasp_file, const std::string& object_file,
+                          const fs::path& mesh_root) {
+  const fs::path root = mesh_root.empty() ? default_mesh_root(grasp_file) : mesh_root;
+  const fs::path mesh = resolve_mesh_path(root, object_file);
+  std::error_code ec;
+  if (!fs::is_regular_file(mesh, ec)) {
+    throw Error(grasp_file.string() + ": its mesh " + mesh.string() +
+                " does not exist (set the mesh root with --mesh-root)");
+  }
+  return mesh;
+}
+
 AcronymDataset AcronymDataset::open(const fs::path& root, const DatasetOptions& options) {
   const fs::path grasp_folder = root / "grasps";
   std::error_code ec;

@@ -44,6 +44,12 @@ std::filesystem::path default_mesh_root(const std::filesystem::path& grasp_file)
 std::filesystem::path resolve_mesh_path(const std::filesystem::path& mesh_root,
                                         const std::string& object_file);
 
+// The existing mesh file of a grasp file's object: resolve_mesh_path against mesh_root, or against
+// default_mesh_root(grasp_file) when mesh_root is empty. Throws Error if that file does not exist.
+std::filesystem::path find_object_mesh(const std::filesystem::path& grasp_file,
+                                       const std::string& object_file,
+                                       const std::filesystem::path& mesh_root);
+
 class AcronymDataset {
  public:
   // Scans root/grasps/*.h5 in name order. Unreadable files, missing meshes and objects with fewer

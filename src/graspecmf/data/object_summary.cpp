@@ -2,7 +2,6 @@
 
 #include <algorithm>
 
-#include "graspecmf/core/error.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 
@@ -17,13 +16,7 @@ ObjectSummary summarize_acronym_object(const fs::path& grasp_file, const fs::pat
     summary.max_rigidity_error =
         std::max(summary.max_rigidity_error, lie::rigidity_error(transform));
   }
-  const fs::path root = mesh_root.empty() ? default_mesh_root(grasp_file) : mesh_root;
-  summary.mesh_file = resolve_mesh_path(root, summary.record.object.file);
-  std::error_code ec;
-  if (!fs::is_regular_file(summary.mesh_file, ec)) {
-    throw Error(grasp_file.string() + ": its mesh " + summary.mesh_file.string() +
-                " does not exist (set the mesh root with --mesh-root)");
-  }
+  summary.mesh_file = find_object_mesh(grasp_file, summary.record.object.file, mesh_root);
   const geometry::TriangleMesh mesh =
       geometry::scaled(geometry::read_mesh(summary.mesh_file), summary.record.object.scale);
   summary.num_vertices = mesh.vertices.size();
