@@ -5,11 +5,13 @@
 #include <filesystem>
 
 #include "graspecmf/core/random.hpp"
+#include "graspecmf/geometry/convex_decomposition.hpp"
 #include "graspecmf/geometry/mass_properties.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/mesh_topology.hpp"
 #include "graspecmf/geometry/point_inside.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/geometry/voxel_grid.hpp"
 
 namespace {
 
@@ -56,5 +58,17 @@ void BM_WindingNumber(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(winding_number(mug, q));
 }
 BENCHMARK(BM_WindingNumber)->Unit(benchmark::kMicrosecond);
+
+void BM_VoxelizeMug64(benchmark::State& state) {
+  const TriangleMesh& mug = metric_mug();
+  for (auto _ : state) benchmark::DoNotOptimize(voxelize(mug, 64));
+}
+BENCHMARK(BM_VoxelizeMug64)->Unit(benchmark::kMillisecond);
+
+void BM_ConvexDecompositionMug(benchmark::State& state) {
+  const TriangleMesh& mug = metric_mug();
+  for (auto _ : state) benchmark::DoNotOptimize(convex_decomposition(mug));
+}
+BENCHMARK(BM_ConvexDecompositionMug)->Unit(benchmark::kMillisecond);
 
 }  // namespace
