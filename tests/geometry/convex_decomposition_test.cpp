@@ -6,27 +6,18 @@
 #include <cmath>
 #include <vector>
 
+#include "convex_part_checks.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/geometry/mass_properties.hpp"
-#include "graspecmf/geometry/mesh_io.hpp"
-#include "graspecmf/geometry/mesh_topology.hpp"
 #include "graspecmf/geometry/point_inside.hpp"
+#include "mug_fixture.hpp"
 #include "test_meshes.hpp"
 
 namespace graspecmf::geometry {
 namespace {
 
 using namespace graspecmf::geometry::testing;
-
-__extension__ typedef __int128 Int128;
-
-// True if q lies on the inner side of (or on) every face plane of the convex part.
-bool in_part(const TriangleMesh& part, const Vec3& q) {
-  return std::all_of(part.triangles.begin(), part.triangles.end(), [&](const Triangle& t) {
-    return orientation(part.vertices[t[0]], part.vertices[t[1]], part.vertices[t[2]], q) <= 0;
-  });
-}
 
 bool in_any_part(const std::vector<TriangleMesh>& parts, const Vec3& q) {
   return std::any_of(parts.begin(), parts.end(),
@@ -37,16 +28,6 @@ double total_volume(const std::vector<TriangleMesh>& parts) {
   double sum = 0.0;
   for (const TriangleMesh& part : parts) sum += mass_properties(part).volume;
   return sum;
-}
-
-// Closed, consistently outward, positive volume, and every vertex on or below every face plane.
-void expect_convex_part(const TriangleMesh& part) {
-  const MeshTopology topology = analyze_topology(part);
-  EXPECT_TRUE(topology.watertight);
-  EXPECT_TRUE(topology.consistently_oriented);
-  EXPECT_EQ(topology.genus, 0);
-  EXPECT_GT(mass_properties(part).volume, 0.0);
-  for (const Vec3& v : part.vertices) EXPECT_TRUE(in_part(part, v));
 }
 
 // Prism over the L-shaped polygon [0,2]² minus [1,2]×[1,2], z in [0,1]: two unit-square boxes
@@ -68,16 +49,6 @@ TriangleMesh make_l_prism() {
   return mesh;
 }
 
-const TriangleMesh& metric_mug() {
-  static const TriangleMesh mug = scaled(read_mesh(kMugPath), kMugScale);
-  return mug;
-}
-
-const std::vector<TriangleMesh>& mug_parts() {
-  static const std::vector<TriangleMesh> parts = convex_decomposition(metric_mug());
-  return parts;
-}
-
 // Sorted distances along the ray at which it crosses the mesh.
 std::vector<double> ray_hits(const TriangleMesh& mesh, const Vec3& origin, const Vec3& dir) {
   std::vector<double> hits;
@@ -93,107 +64,6 @@ std::vector<double> ray_hits(const TriangleMesh& mesh, const Vec3& origin, const
 Vec3 mug_axis_point(double z) {
   const BoundingBox box = bounding_box(metric_mug());
   return Vec3(box.center().x(), box.max.y() - 0.5 * box.extent().x(), z);
-}
-
-TEST(Orientation, SignsOfSimpleConfigurations) {
-  const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
-  EXPECT_EQ(orientation(a, b, c, Vec3(0.2, 0.2, 1.0)), 1);
-  EXPECT_EQ(orientation(a, b, c, Vec3(0.2, 0.2, -1.0)), -1);
-  EXPECT_EQ(orientation(a, b, c, Vec3(5.0, -3.0, 0.0)), 0);
-  EXPECT_EQ(orientation(a, c, b, Vec3(0.2, 0.2, 1.0)), -1);
-}
-
-TEST(Orientation, ExactForNearlyCoplanarPoints) {
-  // Integer coordinates up to 2^25: the determinant's products need up to 78 bits, so the
-  // floating-point value is rounded, but a 128-bit integer determinant is exact.
-  Rng rng(3);
-  const auto coordinate = [&] { return static_cast<std::int64_t>(rng.index(1u << 25)); };
-  int decided_exactly = 0;
-  for (int n = 0; n < 2000; ++n) {
-    std::int64_t p[4][3];
-    for (int i = 0; i < 3; ++i) {
-      for (int k = 0; k < 3; ++k) p[i][k] = coordinate();
-    }
-    // The fourth point near the plane of the first three: an integer combination, nudged by −1..1.
-    const std::int64_t s = static_cast<std::int64_t>(rng.index(7)) - 3;
-    const std::int64_t t = static_cast<std::int64_t>(rng.index(7)) - 3;
-    for (int k = 0; k < 3; ++k) {
-      p[3][k] = p[0][k] + s * (p[1][k] - p[0][k]) + t * (p[2][k] - p[0][k]) +
-                static_cast<std::int64_t>(rng.index(3)) - 1;
-    }
-    Int128 u[3], v[3], w[3];
-    for (int k = 0; k < 3; ++k) {
-      u[k] = p[1][k] - p[0][k];
-      v[k] = p[2][k] - p[0][k];
-      w[k] = p[3][k] - p[0][k];
-    }
-    const Int128 det = u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) +
-                       u[2] * (v[0] * w[1] - v[1] * w[0]);
-    const int expected = (det > 0) - (det < 0);
-    const auto point = [&](int i) {
-      return Vec3(static_cast<double>(p[i][0]), static_cast<double>(p[i][1]),
-                  static_cast<double>(p[i][2]));
-    };
-    ASSERT_EQ(orientation(point(0), point(1), point(2), point(3)), expected) << n;
-    decided_exactly += expected == 0 ? 1 : 0;
-  }
-  EXPECT_GT(decided_exactly, 20);  // exact zeros, which floating point alone cannot certify
-}
-
-TEST(ConvexHull, CubeWithInteriorAndFacePoints) {
-  std::vector<Vec3> points;
-  Rng rng(5);
-  for (int i = 0; i < 200; ++i) {
-    points.emplace_back(rng.uniform(), rng.uniform(), rng.uniform());
-  }
-  // Points on the faces (a 5 × 5 lattice on each), the corners among them.
-  for (int axis = 0; axis < 3; ++axis) {
-    for (const double side : {0.0, 1.0}) {
-      for (int i = 0; i <= 4; ++i) {
-        for (int j = 0; j <= 4; ++j) {
-          Vec3 p;
-          p[axis] = side;
-          p[(axis + 1) % 3] = i / 4.0;
-          p[(axis + 2) % 3] = j / 4.0;
-          points.push_back(p);
-        }
-      }
-    }
-  }
-  const TriangleMesh hull = convex_hull(points);
-  expect_convex_part(hull);
-  EXPECT_NEAR(mass_properties(hull).volume, 1.0, 1e-12);
-  for (const Vec3& p : points) EXPECT_TRUE(in_part(hull, p));
-  for (int corner = 0; corner < 8; ++corner) {
-    const Vec3 c((corner & 1) ? 1.0 : 0.0, (corner & 2) ? 1.0 : 0.0, (corner & 4) ? 1.0 : 0.0);
-    EXPECT_NE(std::find(hull.vertices.begin(), hull.vertices.end(), c), hull.vertices.end());
-  }
-}
-
-TEST(ConvexHull, PointsOnASphereAreAllVertices) {
-  std::vector<Vec3> points;
-  Rng rng(8);
-  for (int i = 0; i < 500; ++i) {
-    points.push_back(Vec3(rng.normal(), rng.normal(), rng.normal()).normalized());
-  }
-  const TriangleMesh hull = convex_hull(points);
-  expect_convex_part(hull);
-  EXPECT_EQ(hull.vertices.size(), 500u);
-  EXPECT_EQ(hull.triangles.size(), 2u * 500u - 4u);
-  const double volume = mass_properties(hull).volume;  // inscribed in the unit ball
-  EXPECT_LT(volume, 4.0 / 3.0 * M_PI);
-  EXPECT_GT(volume, 0.95 * 4.0 / 3.0 * M_PI);
-}
-
-TEST(ConvexHull, FlatOrTooFewPointsGiveNothing) {
-  EXPECT_TRUE(convex_hull({}).triangles.empty());
-  EXPECT_TRUE(convex_hull({Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)}).triangles.empty());
-  std::vector<Vec3> flat;
-  for (int i = 0; i < 20; ++i) flat.emplace_back(i % 5, i / 5, 2.0);
-  EXPECT_TRUE(convex_hull(flat).triangles.empty());
-  std::vector<Vec3> collinear;
-  for (int i = 0; i < 20; ++i) collinear.emplace_back(i, 2 * i, 3 * i);
-  EXPECT_TRUE(convex_hull(collinear).triangles.empty());
 }
 
 TEST(ConvexDecomposition, ConvexMeshesStayWhole) {
@@ -339,74 +209,6 @@ TEST(ConvexDecomposition, RejectsBadInput) {
   EXPECT_THROW(convex_decomposition(cube, {64, 64, -0.1, 4}), Error);
   EXPECT_THROW(convex_decomposition(cube, {64, 64, std::nan(""), 4}), Error);
   EXPECT_THROW(convex_decomposition(cube, {64, 64, 0.002, 0}), Error);
-}
-
-void expect_same_parts(const std::vector<TriangleMesh>& a, const std::vector<TriangleMesh>& b) {
-  ASSERT_EQ(a.size(), b.size());
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(a[i].vertices, b[i].vertices);
-    EXPECT_EQ(a[i].triangles, b[i].triangles);
-  }
-}
-
-TEST(DecompositionCache, WritesOnceThenReads) {
-  ScratchDir dir;
-  const fs::path cache = dir / "cache" / "nested";  // created on demand
-  const DecompositionOptions options;
-  const fs::path file = decomposition_cache_file(metric_mug(), options, cache);
-  EXPECT_EQ(file.parent_path(), cache);
-  EXPECT_FALSE(fs::exists(file));
-  expect_same_parts(cached_convex_decomposition(metric_mug(), options, cache), mug_parts());
-  ASSERT_TRUE(fs::exists(file));
-  const std::string bytes = read_file(file);
-  expect_same_parts(cached_convex_decomposition(metric_mug(), options, cache), mug_parts());
-  EXPECT_EQ(read_file(file), bytes);
-  EXPECT_EQ(fs::directory_iterator(cache)->path(), file);  // nothing else left there
-
-  // A valid file under the mug's name is used as is, without recomputing: put a box's
-  // decomposition there and the mug's lookup returns the box.
-  const TriangleMesh box = make_unit_cube();
-  const std::vector<TriangleMesh> box_parts = cached_convex_decomposition(box, options, cache);
-  fs::copy_file(decomposition_cache_file(box, options, cache), file,
-                fs::copy_options::overwrite_existing);
-  expect_same_parts(cached_convex_decomposition(metric_mug(), options, cache), box_parts);
-}
-
-TEST(DecompositionCache, KeyCoversMeshAndOptions) {
-  const fs::path dir = "/cache";
-  const DecompositionOptions options;
-  const fs::path file = decomposition_cache_file(metric_mug(), options, dir);
-  DecompositionOptions finer = options;
-  finer.resolution = 65;
-  DecompositionOptions looser = options;
-  looser.concavity = 0.0021;
-  EXPECT_NE(decomposition_cache_file(metric_mug(), finer, dir), file);
-  EXPECT_NE(decomposition_cache_file(metric_mug(), looser, dir), file);
-  EXPECT_NE(decomposition_cache_file(scaled(metric_mug(), 1.0 + 1e-15), options, dir), file);
-  TriangleMesh flipped = metric_mug();
-  std::swap(flipped.triangles[7][1], flipped.triangles[7][2]);
-  EXPECT_NE(decomposition_cache_file(flipped, options, dir), file);
-  EXPECT_EQ(decomposition_cache_file(metric_mug(), options, dir), file);
-}
-
-TEST(DecompositionCache, CorruptFilesAreRecomputed) {
-  ScratchDir dir;
-  const TriangleMesh torus = make_torus(1.0, 0.3, 24, 12);
-  const DecompositionOptions options{24, 16, 0.002, 4};
-  const std::vector<TriangleMesh> parts = convex_decomposition(torus, options);
-  const fs::path file = decomposition_cache_file(torus, options, dir.path());
-  cached_convex_decomposition(torus, options, dir.path());
-  const std::string good = read_file(file);
-  std::string flipped = good;
-  flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
-  const std::string corruptions[] = {
-      "",      "GCVXDEC1", good.substr(0, good.size() - 1), good.substr(0, good.size() / 3),
-      flipped, good + "x"};
-  for (const std::string& bytes : corruptions) {
-    write_file(file, bytes);
-    expect_same_parts(cached_convex_decomposition(torus, options, dir.path()), parts);
-    EXPECT_EQ(read_file(file), good) << "rewritten after a " << bytes.size() << "-byte file";
-  }
 }
 
 }  // namespace
