@@ -8,12 +8,14 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/version.hpp"
 #include "inspect_command.hpp"
+#include "simulate_command.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app("graspecmf: SO(3)-equivariant 6-DoF grasp generation (GraspECMF)", "graspecmf");
   app.set_version_flag("--version", std::string("graspecmf ") + graspecmf::kVersion);
   app.require_subcommand(1);
   graspecmf::apps::add_inspect_command(app);
+  graspecmf::apps::add_simulate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/hdf5_file.hpp"
 #include "test_support.hpp"
 
@@ -151,6 +152,46 @@ TEST(Cli, MeshRootOption) {
                             graspecmf::testing::sample_root().string(),
                         dir);
   EXPECT_EQ(ok.exit_code, 0) << ok.err;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(CliSimulate, LabelsAFewGraspsAndWritesBothFormats) {
+  ScratchDir dir;
+  const std::string common = "simulate " + sample_grasp_file().string() +
+                             " --every 500 --threads 2 --cache " + (dir / "cache").string();
+  const CliRun json_run = run(common + " --compare-labels --out " + (dir / "r.json").string(), dir);
+  ASSERT_EQ(json_run.exit_code, 0) << json_run.err;
+  EXPECT_NE(json_run.out.find("4 grasps"), std::string::npos) << json_run.out;
+  EXPECT_NE(json_run.out.find("agreement with the file's labels"), std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(read_file(dir / "r.json"));
+  EXPECT_EQ(j["trials"].size(), 4u);
+  EXPECT_EQ(j["trials"][1]["index"], 500);
+  EXPECT_EQ(j["agreement"]["count"], 4);
+  EXPECT_TRUE(j["config"].contains("finger_force"));
+
+  const CliRun h5_run = run(common + " --out " + (dir / "r.h5").string(), dir);
+  ASSERT_EQ(h5_run.exit_code, 0) << h5_run.err;
+  const graspecmf::data::AcronymGraspFile labelled =
+      graspecmf::data::read_acronym_file(dir / "r.h5");
+  ASSERT_EQ(labelled.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) {
+    EXPECT_EQ(labelled.qualities->object_in_gripper[k],
+              j["trials"][k]["success"].get<bool>() ? 1 : 0);  // same labels on a rerun
+  }
+}
+
+TEST(CliSimulate, BadInput) {
+  ScratchDir dir;
+  expect_one_error_line(run("simulate " + (dir / "missing.h5").string(), dir), "no such file");
+  graspecmf::testing::write_file(dir / "bad.json", R"({"finger_force": -5})");
+  expect_one_error_line(
+      run("simulate " + sample_grasp_file().string() + " --config " + (dir / "bad.json").string(),
+          dir),
+      "finger_force");
+  EXPECT_NE(run("simulate " + sample_grasp_file().string() + " --threads 0", dir).exit_code, 0);
 }
 
 }  // namespace
