@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
@@ -39,6 +41,23 @@ TEST(Panda, FingersFollowTheOpening) {
   }
   EXPECT_THROW(collision_boxes(0.09), Error);
   EXPECT_THROW(collision_boxes(-0.01), Error);
+}
+
+TEST(Panda, FingerPointsAreTheCollisionMeshsRightFinger) {
+  // Every finger point is a vertex of the collision mesh (to its 5-decimal rounding), and its
+  // pad face sits at x = opening / 2.
+  const geometry::TriangleMesh hand = geometry::read_mesh(testing::gripper_mesh_file());
+  for (const Vec3& p : finger_points(panda::kMaxOpening)) {
+    double nearest = 1.0;
+    for (const Vec3& v : hand.vertices) nearest = std::min(nearest, (v - p).norm());
+    EXPECT_LT(nearest, 1e-5) << p.transpose();
+  }
+  for (const double opening : {0.0, 0.05}) {
+    double inner = 1.0;
+    for (const Vec3& p : finger_points(opening)) inner = std::min(inner, p.x());
+    EXPECT_NEAR(inner, 0.5 * opening, 2e-4);
+  }
+  EXPECT_THROW(finger_points(0.1), Error);
 }
 
 TEST(Panda, CollisionMeshIsSevenClosedBoxes) {

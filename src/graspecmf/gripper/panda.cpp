@@ -28,6 +28,18 @@ constexpr FingerBand kFingerBands[] = {
     {0.0946, panda::kFingertipZ, -0.0001, 0.0192},  // pad and tip
 };
 
+// The right finger's vertices in franka_gripper_collision_mesh.stl (fully open, inner pad face at
+// x = 0.04): the base block where it leaves the palm, then the pad, which is ±8.7 mm wide and
+// narrows to ±5.5 mm at the tip.
+const Vec3 kOpenFingerPoints[] = {
+    {0.04253, 0.01039, 0.05853},  {0.04258, -0.01045, 0.05855}, {0.06640, -0.01036, 0.05855},
+    {0.06631, 0.01040, 0.05857},  {0.05510, -0.01049, 0.07684}, {0.05610, 0.01048, 0.07739},
+    {0.06525, -0.01040, 0.07744}, {0.06522, 0.01039, 0.07759},  {0.03998, 0.00873, 0.09456},
+    {0.03987, -0.00869, 0.10857}, {0.05392, 0.00884, 0.10899},  {0.03994, 0.00862, 0.10935},
+    {0.05399, -0.00862, 0.10973}, {0.05422, 0.00778, 0.11077},  {0.03998, -0.00614, 0.11198},
+    {0.03991, 0.00548, 0.11212},  {0.05427, -0.00584, 0.11220}, {0.05429, 0.00528, 0.11225},
+};
+
 // Palm housing bounds from the collision mesh's palm part.
 const Vec3 kPalmMin(-0.1005, -0.0317, -0.0260);
 const Vec3 kPalmMax(0.1040, 0.0317, panda::kPalmTopZ);
@@ -58,6 +70,15 @@ std::vector<OrientedBox> collision_boxes(double opening) {
     }
   }
   return boxes;
+}
+
+std::vector<Vec3> finger_points(double opening) {
+  check_opening(opening);
+  std::vector<Vec3> points;
+  for (const Vec3& p : kOpenFingerPoints) {
+    points.push_back(p + Vec3(0.5 * (opening - panda::kMaxOpening), 0, 0));
+  }
+  return points;
 }
 
 geometry::TriangleMesh collision_mesh(double opening) {

@@ -30,6 +30,9 @@ void check_opening(double opening);
 // palm housing, then three stacked boxes per finger (base, taper, tip), left finger at −x first.
 // opening is the distance between the inner finger faces.
 std::vector<geometry::OrientedBox> collision_boxes(double opening = panda::kMaxOpening);
+// The vertices of the right (+x) finger of ACRONYM's collision mesh (its convex hull is the
+// finger), with the inner pad face at x = opening / 2; the left finger is this turned by π about z.
+std::vector<Vec3> finger_points(double opening = panda::kMaxOpening);
 // The collision boxes as one closed mesh, for visualisation.
 geometry::TriangleMesh collision_mesh(double opening = panda::kMaxOpening);
 // True if the hand at `grasp` (T_object_gripper) intersects the closed object mesh.

@@ -32,21 +32,29 @@ std::string box_geom(const geometry::OrientedBox& box, const TrialConfig& config
       kHandCollision);
 }
 
-// A finger body on a slide along `axis`, carrying the boxes of one finger at zero opening.
-std::string finger_body(const char* name, const char* axis,
-                        const std::vector<geometry::OrientedBox>& boxes, std::size_t first,
-                        const TrialConfig& config) {
-  std::string geoms;
-  for (std::size_t i = first; i < first + 3; ++i)
-    geoms += "        " + box_geom(boxes[i], config) + "\n";
+// The finger's collision mesh at zero opening: the right finger as in the collision mesh, the
+// left one turned by π about z.
+std::string finger_mesh_asset(const char* name, double side) {
+  std::string vertices;
+  for (const Eigen::Vector3d& p : gripper::finger_points(0.0)) {
+    vertices += vec_text(Eigen::Vector3d(side * p.x(), side * p.y(), p.z())) + " ";
+  }
+  return fmt::format(R"(    <mesh name="{}" vertex="{}"/>)"
+                     "\n",
+                     name, vertices);
+}
+
+// A finger body on a slide along `axis`, carrying the finger mesh at zero opening.
+std::string finger_body(const char* name, const char* axis, const TrialConfig& config) {
   return fmt::format(
       R"(      <body name="{0}">
-        <joint name="{0}" type="slide" axis="{1}" range="0 {2}" limited="true" damping="{3}"/>
+        <joint name="{0}" type="slide" axis="{1}" range="0 {2}" limited="true" damping="{3}" armature="{8}"/>
         <inertial pos="0 0 0.09" mass="{4}" diaginertia="1e-5 1e-5 1e-5"/>
-{5}      </body>
+        <geom type="mesh" mesh="{0}" friction="{5} {6} 0.0001" condim="4" {7} mass="0"/>
+      </body>
 )",
       name, axis, 0.5 * gripper::panda::kMaxOpening, config.finger_damping, config.finger_mass,
-      geoms);
+      config.friction, config.torsional_friction, kHandCollision, config.finger_armature);
 }
 
 }  // namespace
@@ -56,7 +64,8 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
   if (object.parts.empty()) throw Error("grasp scene: the object has no convex parts");
   if (!(object.mass > 0.0)) throw Error("grasp scene: the object mass must be positive");
 
-  std::string assets, object_geoms;
+  std::string assets = finger_mesh_asset(kLeftFinger, -1.0) + finger_mesh_asset(kRightFinger, 1.0);
+  std::string object_geoms;
   for (std::size_t i = 0; i < object.parts.size(); ++i) {
     assets += mesh_asset(object.parts[i], i);
     object_geoms += fmt::format(
@@ -70,8 +79,10 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
   return fmt::format(
       R"(<mujoco model="graspecmf_grasp_trial">
   <compiler angle="radian" inertiafromgeom="false" boundmass="1e-6" boundinertia="1e-12"/>
-  <option timestep="{timestep}" gravity="0 0 0" cone="elliptic" impratio="10" integrator="implicit"/>
-  <default><geom solref="{contact_timeconst} 1" solimp="0.95 0.99 0.001"/></default>
+  <option timestep="{timestep}" gravity="0 0 0" cone="elliptic" impratio="10" integrator="implicit">
+    <flag multiccd="enable"/>
+  </option>
+  <default><geom solref="{contact_timeconst} 1" solimp="{solimp}"/></default>
   <size njmax="2000" nconmax="500"/>
   <asset>
 {assets}  </asset>
@@ -97,6 +108,8 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
 </mujoco>
 )",
       fmt::arg("timestep", config.timestep),
+      fmt::arg("solimp", fmt::format("{} {} {}", config.contact_dmin, config.contact_dmax,
+                                     config.contact_width)),
       fmt::arg("contact_timeconst", config.contact_timeconst), fmt::arg("assets", assets),
       fmt::arg("object_body", kObjectBody), fmt::arg("com", vec_text(object.center_of_mass)),
       fmt::arg("mass", object.mass), fmt::arg("ixx", I(0, 0)), fmt::arg("iyy", I(1, 1)),
@@ -104,8 +117,8 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
       fmt::arg("iyz", I(1, 2)), fmt::arg("object_geoms", object_geoms),
       fmt::arg("target_body", kTargetBody), fmt::arg("hand_body", kHandBody),
       fmt::arg("hand_mass", config.hand_mass), fmt::arg("palm", box_geom(boxes[0], config)),
-      fmt::arg("left", finger_body(kLeftFinger, "-1 0 0", boxes, 1, config)),
-      fmt::arg("right", finger_body(kRightFinger, "1 0 0", boxes, 4, config)),
+      fmt::arg("left", finger_body(kLeftFinger, "-1 0 0", config)),
+      fmt::arg("right", finger_body(kRightFinger, "1 0 0", config)),
       fmt::arg("left_name", kLeftFinger), fmt::arg("right_name", kRightFinger),
       fmt::arg("gain", config.finger_gain), fmt::arg("lo", -limit), fmt::arg("hi", limit));
 }

@@ -21,12 +21,16 @@ constexpr Field kFields[] = {
     {"friction", &TrialConfig::friction, false},
     {"torsional_friction", &TrialConfig::torsional_friction, true},
     {"contact_timeconst", &TrialConfig::contact_timeconst, false},
+    {"contact_dmin", &TrialConfig::contact_dmin, false},
+    {"contact_dmax", &TrialConfig::contact_dmax, false},
+    {"contact_width", &TrialConfig::contact_width, false},
     {"default_density", &TrialConfig::default_density, false},
     {"hand_mass", &TrialConfig::hand_mass, false},
     {"finger_mass", &TrialConfig::finger_mass, false},
     {"finger_force", &TrialConfig::finger_force, false},
     {"finger_gain", &TrialConfig::finger_gain, false},
     {"finger_damping", &TrialConfig::finger_damping, true},
+    {"finger_armature", &TrialConfig::finger_armature, true},
     {"close_duration", &TrialConfig::close_duration, false},
     {"settle_duration", &TrialConfig::settle_duration, true},
     {"lift_distance", &TrialConfig::lift_distance, true},
@@ -52,6 +56,9 @@ void validate(const TrialConfig& config) {
   if (config.timestep > 0.01) throw Error("trial config: timestep must be at most 0.01 s");
   if (config.contact_timeconst < 2.0 * config.timestep) {
     throw Error("trial config: contact_timeconst must be at least 2 × timestep");
+  }
+  if (!(config.contact_dmin <= config.contact_dmax && config.contact_dmax < 1.0)) {
+    throw Error("trial config: need 0 < contact_dmin ≤ contact_dmax < 1");
   }
 }
 
