@@ -49,16 +49,6 @@ TriangleMesh make_l_prism() {
   return mesh;
 }
 
-// Sorted distances along the ray at which it crosses the mesh.
-std::vector<double> ray_hits(const TriangleMesh& mesh, const Vec3& origin, const Vec3& dir) {
-  std::vector<double> hits;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (const auto hit = ray_hit(mesh, t, origin, dir)) hits.push_back(*hit);
-  }
-  std::sort(hits.begin(), hits.end());
-  return hits;
-}
-
 // The mug's body axis (vertical line) from its bounding box: centred in x, and one body radius
 // (half the x extent) inside the +y side, the handle being on the −y side.
 Vec3 mug_axis_point(double z) {

@@ -14,16 +14,6 @@ namespace {
 
 using namespace graspecmf::geometry::testing;
 
-// Sorted distances at which the ray from origin along dir crosses the mesh.
-std::vector<double> ray_hits(const TriangleMesh& mesh, const Vec3& origin, const Vec3& dir) {
-  std::vector<double> hits;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    if (const auto hit = ray_hit(mesh, t, origin, dir)) hits.push_back(*hit);
-  }
-  std::sort(hits.begin(), hits.end());
-  return hits;
-}
-
 Vec3 random_direction(Rng& rng) {
   return Vec3(rng.normal(), rng.normal(), rng.normal()).normalized();
 }

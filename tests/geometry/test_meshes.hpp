@@ -5,11 +5,13 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "graspecmf/geometry/triangle_mesh.hpp"
 #include "test_support.hpp"
@@ -84,7 +86,6 @@ inline TriangleMesh merged(const TriangleMesh& a, const TriangleMesh& b) {
   return out;
 }
 
-// Fresh, empty folder for the running test, removed by the destructor.
 // Ray parameter t > 0 where origin + t dir crosses triangle t (Möller–Trumbore), if it does.
 inline std::optional<double> ray_hit(const TriangleMesh& mesh, std::size_t t, const Vec3& origin,
                                      const Vec3& dir) {
@@ -105,12 +106,19 @@ inline std::optional<double> ray_hit(const TriangleMesh& mesh, std::size_t t, co
   return hit;
 }
 
+// Sorted ray parameters at which the ray from origin along dir crosses the mesh.
+inline std::vector<double> ray_hits(const TriangleMesh& mesh, const Vec3& origin, const Vec3& dir) {
+  std::vector<double> hits;
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    if (const auto hit = ray_hit(mesh, t, origin, dir)) hits.push_back(*hit);
+  }
+  std::sort(hits.begin(), hits.end());
+  return hits;
+}
+
 // Number of triangles the ray from origin along dir crosses.
 inline int ray_crossings(const TriangleMesh& mesh, const Vec3& origin, const Vec3& dir) {
-  int count = 0;
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    count += ray_hit(mesh, t, origin, dir) ? 1 : 0;
-  return count;
+  return static_cast<int>(ray_hits(mesh, origin, dir).size());
 }
 
 }  // namespace graspecmf::geometry::testing

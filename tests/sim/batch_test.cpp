@@ -2,9 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "box_object.hpp"
 #include "graspecmf/core/error.hpp"
-#include "graspecmf/geometry/mass_properties.hpp"
-#include "graspecmf/geometry/oriented_box.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -12,15 +11,7 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 
 TEST(RunTrials, SameLabelsOnOneAndTwoThreads) {
-  geometry::OrientedBox box;
-  box.pose.p = Vec3(0, 0, 0.04);
-  box.half_extents = Vec3(0.025, 0.025, 0.04);
-  SceneObject object;
-  object.parts = {geometry::box_mesh(box)};
-  const geometry::MassProperties mp = geometry::mass_properties(object.parts[0], 150.0);
-  object.mass = mp.mass;
-  object.center_of_mass = mp.center_of_mass;
-  object.inertia = mp.inertia;
+  const SceneObject object = testing::box_object();
 
   std::vector<lie::Pose> grasps;
   for (int i = 0; i < 6; ++i) {

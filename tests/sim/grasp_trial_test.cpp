@@ -4,28 +4,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include "box_object.hpp"
 #include "graspecmf/core/error.hpp"
-#include "graspecmf/geometry/mass_properties.hpp"
-#include "graspecmf/geometry/oriented_box.hpp"
 
 namespace graspecmf::sim {
 namespace {
 
+using testing::box_object;
 using Vec3 = Eigen::Vector3d;
-
-// A 5 × 5 × 8 cm box of 150 kg/m³ centred at (0, 0, 0.04), as one convex part.
-SceneObject box_object() {
-  geometry::OrientedBox box;
-  box.pose.p = Vec3(0, 0, 0.04);
-  box.half_extents = Vec3(0.025, 0.025, 0.04);
-  SceneObject object;
-  object.parts = {geometry::box_mesh(box)};
-  const geometry::MassProperties mp = geometry::mass_properties(object.parts[0], 150.0);
-  object.mass = mp.mass;
-  object.center_of_mass = mp.center_of_mass;
-  object.inertia = mp.inertia;
-  return object;
-}
 
 // Top-down grasp (approach −z) with the pads at height z, fingers closing along world x.
 lie::Pose top_down_grasp(double z, double x_offset = 0.0) {

@@ -375,16 +375,6 @@ std::vector<Group> merge(const std::vector<Cell>& cells, std::size_t max_parts, 
   return groups;
 }
 
-void check_closed(const TriangleMesh& mesh) {
-  validate_mesh(mesh, "convex_decomposition");
-  const MeshTopology topology = analyze_topology(mesh);
-  if (!topology.watertight) {
-    throw Error("convex_decomposition: the mesh is not watertight (" +
-                std::to_string(topology.num_boundary_edges) + " boundary and " +
-                std::to_string(topology.num_nonmanifold_edges) + " non-manifold edges)");
-  }
-}
-
 void check_options(const DecompositionOptions& options) {
   if (options.resolution < kMinResolution || options.resolution > kMaxResolution) {
     throw Error("convex_decomposition: resolution " + std::to_string(options.resolution) +
@@ -404,7 +394,7 @@ void check_options(const DecompositionOptions& options) {
 std::vector<TriangleMesh> convex_decomposition(const TriangleMesh& mesh,
                                                const DecompositionOptions& options) {
   check_options(options);
-  check_closed(mesh);
+  require_watertight(mesh, "convex_decomposition");
   const double tolerance = options.concavity * std::abs(mass_properties(mesh).volume);
   const std::vector<Cell> cells = Splitter(mesh, options, tolerance).run();
   std::vector<TriangleMesh> parts;

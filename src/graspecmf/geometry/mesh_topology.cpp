@@ -4,6 +4,8 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "graspecmf/core/error.hpp"
+
 namespace graspecmf::geometry {
 
 namespace {
@@ -203,6 +205,16 @@ std::vector<TriangleMesh> connected_components(const TriangleMesh& mesh) {
     part.triangles.push_back(tri);
   }
   return parts;
+}
+
+void require_watertight(const TriangleMesh& mesh, const std::string& what) {
+  validate_mesh(mesh, what);
+  const MeshTopology topology = analyze_topology(mesh);
+  if (!topology.watertight) {
+    throw Error(what + ": the mesh is not watertight (" +
+                std::to_string(topology.num_boundary_edges) + " boundary and " +
+                std::to_string(topology.num_nonmanifold_edges) + " non-manifold edges)");
+  }
 }
 
 }  // namespace graspecmf::geometry

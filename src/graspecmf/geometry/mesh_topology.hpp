@@ -3,6 +3,7 @@
 // orientation, connected components, Euler characteristic and genus.
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include "graspecmf/geometry/triangle_mesh.hpp"
@@ -25,6 +26,9 @@ struct MeshTopology {
 
 // Analyses the mesh's edges (vertices are matched by index, so weld first); the mesh must be valid.
 MeshTopology analyze_topology(const TriangleMesh& mesh);
+// Throws Error (prefixed with `what`) unless the mesh is valid and watertight, naming the counts of
+// boundary and non-manifold edges.
+void require_watertight(const TriangleMesh& mesh, const std::string& what);
 // Splits the mesh into its edge-connected components, each with its own compact vertex list, in
 // order of their first triangle.
 std::vector<TriangleMesh> connected_components(const TriangleMesh& mesh);

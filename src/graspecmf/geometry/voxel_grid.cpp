@@ -129,16 +129,6 @@ void collect_spans(const std::vector<Hit>& hits, ColumnSpans& lines) {
   lines.first[num_lines] = static_cast<std::uint32_t>(lines.spans.size());
 }
 
-void require_closed(const TriangleMesh& mesh) {
-  validate_mesh(mesh, "column_spans");
-  const MeshTopology topology = analyze_topology(mesh);
-  if (!topology.watertight) {
-    throw Error("column_spans: the mesh is not watertight (" +
-                std::to_string(topology.num_boundary_edges) + " boundary and " +
-                std::to_string(topology.num_nonmanifold_edges) + " non-manifold edges)");
-  }
-}
-
 }  // namespace
 
 bool ColumnSpans::inside(int i, int j, double z) const {
@@ -175,7 +165,7 @@ ColumnSpans column_spans(const TriangleMesh& mesh, double x0, double y0, double 
   if (std::min(nx, ny) < 1 || static_cast<double>(nx) * ny > kMaxLines) {
     throw Error("column_spans: the lattice must have at least 1 and at most 2^26 lines");
   }
-  require_closed(mesh);
+  require_watertight(mesh, "column_spans");
   ColumnSpans lines;
   lines.x0 = x0;
   lines.y0 = y0;
