@@ -1,5 +1,6 @@
 #include "graspecmf/gripper/panda.hpp"
 
+#include <algorithm>
 #include <string>
 
 #include "graspecmf/core/error.hpp"
@@ -99,6 +100,13 @@ bool in_collision(const geometry::TriangleMesh& object, const lie::Pose& grasp, 
     if (geometry::box_overlaps_mesh(geometry::transformed(box, grasp), object)) return true;
   }
   return false;
+}
+
+bool in_collision(const geometry::MeshRayCaster& object, const lie::Pose& grasp, double opening) {
+  const std::vector<OrientedBox> boxes = collision_boxes(opening);
+  return std::any_of(boxes.begin(), boxes.end(), [&](const OrientedBox& box) {
+    return object.overlaps(geometry::transformed(box, grasp));
+  });
 }
 
 std::array<Vec3, 6> control_points(double opening) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "graspecmf/geometry/oriented_box.hpp"
+#include "graspecmf/geometry/ray_cast.hpp"
 
 namespace graspecmf::gripper {
 
@@ -37,6 +38,9 @@ std::vector<Vec3> finger_points(double opening = panda::kMaxOpening);
 geometry::TriangleMesh collision_mesh(double opening = panda::kMaxOpening);
 // True if the hand at `grasp` (T_object_gripper) intersects the closed object mesh.
 bool in_collision(const geometry::TriangleMesh& object, const lie::Pose& grasp,
+                  double opening = panda::kMaxOpening);
+// The same answer through the object's BVH (much faster for many grasps on one object).
+bool in_collision(const geometry::MeshRayCaster& object, const lie::Pose& grasp,
                   double opening = panda::kMaxOpening);
 
 // ACRONYM's gripper marker as line segments: the stem from the flange to the palm, the bar across
