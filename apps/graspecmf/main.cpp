@@ -8,6 +8,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/version.hpp"
 #include "inspect_command.hpp"
+#include "make_dataset_command.hpp"
 #include "simulate_command.hpp"
 
 int main(int argc, char** argv) {
@@ -16,6 +17,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   graspecmf::apps::add_inspect_command(app);
   graspecmf::apps::add_simulate_command(app);
+  graspecmf::apps::add_make_dataset_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -3,7 +3,6 @@
 #include <fmt/format.h>
 
 #include <chrono>
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -30,17 +29,6 @@ struct SimulateOptions {
   bool compare_labels = false;
 };
 
-sim::TrialConfig load_config(const std::string& path) {
-  if (path.empty()) return {};
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open trial config");
-  try {
-    return sim::trial_config_from_json(nlohmann::json::parse(in));
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(path + ": not valid JSON (" + e.what() + ")");
-  }
-}
-
 nlohmann::json agreement_json(const sim::LabelAgreement& a) {
   return {{"count", a.count},
           {"accuracy", a.accuracy},
@@ -58,21 +46,13 @@ data::AcronymGraspFile labelled_record(const data::AcronymGraspFile& record,
                                        const std::vector<sim::TrialResult>& results) {
   data::AcronymGraspFile out = record;
   out.transforms.clear();
-  data::GraspQualities q;
-  for (std::size_t k = 0; k < indices.size(); ++k) {
-    out.transforms.push_back(record.transforms[indices[k]]);
-    q.object_in_gripper.push_back(results[k].success ? 1 : 0);
-    q.motion_closing_linear.push_back(results[k].closing_linear);
-    q.motion_closing_angular.push_back(results[k].closing_angular);
-    q.motion_shaking_linear.push_back(results[k].shaking_linear);
-    q.motion_shaking_angular.push_back(results[k].shaking_angular);
-  }
-  out.qualities = std::move(q);
+  for (std::size_t i : indices) out.transforms.push_back(record.transforms[i]);
+  out.qualities = sim::acronym_qualities(results);
   return out;
 }
 
 void run(const SimulateOptions& o) {
-  const sim::TrialConfig config = load_config(o.config_file);
+  const sim::TrialConfig config = sim::read_trial_config(o.config_file);
   const data::AcronymGraspFile record = data::read_acronym_file(o.grasp_file);
   if (o.compare_labels && !record.qualities) {
     throw Error(o.grasp_file + ": --compare-labels needs the file's object_in_gripper labels");

@@ -227,6 +227,14 @@ struct Hdf5Writer::Impl {
   H5::H5File file;
   bool open = false;
 
+  // Dataset creation without the modification time HDF5 records by default, so that the same
+  // content always gives the same bytes (resumed dataset runs compare byte for byte).
+  static H5::DSetCreatPropList untimed_creation() {
+    H5::DSetCreatPropList creation;
+    H5Pset_obj_track_times(creation.getId(), false);
+    return creation;
+  }
+
   H5::LinkCreatPropList link_properties() const {
     H5::LinkCreatPropList properties;
     properties.setCreateIntermediateGroup(true);
@@ -244,7 +252,7 @@ struct Hdf5Writer::Impl {
       const std::vector<hsize_t> dims(shape.begin(), shape.end());
       const Shape chunk_shape = h5py_chunk_shape(shape, sizeof(T));
       const std::vector<hsize_t> chunk(chunk_shape.begin(), chunk_shape.end());
-      H5::DSetCreatPropList creation;
+      H5::DSetCreatPropList creation = untimed_creation();
       creation.setChunk(static_cast<int>(chunk.size()), chunk.data());
       creation.setDeflate(4);
       H5::DataSpace space(static_cast<int>(dims.size()), dims.data());
@@ -290,7 +298,7 @@ void Hdf5Writer::write_int64s(const std::string& path, const std::vector<std::in
 void Hdf5Writer::write_double(const std::string& path, double value) {
   try {
     H5::DataSet ds = impl_->file.createDataSet(
-        path, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR), H5::DSetCreatPropList::DEFAULT,
+        path, H5::PredType::IEEE_F64LE, H5::DataSpace(H5S_SCALAR), Impl::untimed_creation(),
         H5::DSetAccPropList::DEFAULT, impl_->link_properties());
     ds.write(&value, H5::PredType::NATIVE_DOUBLE);
   } catch (const H5::Exception& e) {
@@ -302,9 +310,9 @@ void Hdf5Writer::write_string(const std::string& path, const std::string& value)
   try {
     H5::StrType type(H5::PredType::C_S1, H5T_VARIABLE);
     type.setCset(H5T_CSET_UTF8);
-    H5::DataSet ds = impl_->file.createDataSet(
-        path, type, H5::DataSpace(H5S_SCALAR), H5::DSetCreatPropList::DEFAULT,
-        H5::DSetAccPropList::DEFAULT, impl_->link_properties());
+    H5::DataSet ds =
+        impl_->file.createDataSet(path, type, H5::DataSpace(H5S_SCALAR), Impl::untimed_creation(),
+                                  H5::DSetAccPropList::DEFAULT, impl_->link_properties());
     ds.write(value, type);
   } catch (const H5::Exception& e) {
     throw Error(impl_->path.string() + ": cannot write /" + path + ": " + describe(e));

@@ -42,4 +42,16 @@ std::vector<TrialResult> run_trials(const SceneObject& object, const std::vector
   return results;
 }
 
+data::GraspQualities acronym_qualities(const std::vector<TrialResult>& results) {
+  data::GraspQualities q;
+  for (const TrialResult& r : results) {
+    q.object_in_gripper.push_back(r.success ? 1 : 0);
+    q.motion_closing_linear.push_back(r.closing_linear);
+    q.motion_closing_angular.push_back(r.closing_angular);
+    q.motion_shaking_linear.push_back(r.shaking_linear);
+    q.motion_shaking_angular.push_back(r.shaking_angular);
+  }
+  return q;
+}
+
 }  // namespace graspecmf::sim

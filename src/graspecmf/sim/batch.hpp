@@ -5,6 +5,7 @@
 #include <functional>
 #include <vector>
 
+#include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/sim/grasp_trial.hpp"
 
 namespace graspecmf::sim {
@@ -16,5 +17,9 @@ using ProgressCallback = std::function<void(std::size_t finished, std::size_t to
 std::vector<TrialResult> run_trials(const SceneObject& object, const std::vector<lie::Pose>& grasps,
                                     const TrialConfig& config, int threads,
                                     const ProgressCallback& progress = {});
+
+// ACRONYM's quality arrays for the results: object_in_gripper (1 = success) and the closing and
+// shaking motion integrals, in result order.
+data::GraspQualities acronym_qualities(const std::vector<TrialResult>& results);
 
 }  // namespace graspecmf::sim

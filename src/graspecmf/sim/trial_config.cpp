@@ -1,6 +1,7 @@
 #include "graspecmf/sim/trial_config.hpp"
 
 #include <cmath>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <utility>
 
@@ -82,6 +83,17 @@ TrialConfig trial_config_from_json(const nlohmann::json& json) {
   }
   validate(config);
   return config;
+}
+
+TrialConfig read_trial_config(const std::string& path) {
+  if (path.empty()) return {};
+  std::ifstream in(path);
+  if (!in) throw Error(path + ": cannot open trial config");
+  try {
+    return trial_config_from_json(nlohmann::json::parse(in));
+  } catch (const nlohmann::json::exception& e) {
+    throw Error(path + ": not valid JSON (" + e.what() + ")");
+  }
 }
 
 }  // namespace graspecmf::sim

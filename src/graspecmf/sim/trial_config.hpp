@@ -3,6 +3,7 @@
 // whole struct is written beside any results it produced.
 
 #include <nlohmann/json_fwd.hpp>
+#include <string>
 
 namespace graspecmf::sim {
 
@@ -46,5 +47,8 @@ void validate(const TrialConfig& config);
 nlohmann::json to_json(const TrialConfig& config);
 // Reads a config (missing keys keep their defaults; unknown keys are an Error).
 TrialConfig trial_config_from_json(const nlohmann::json& json);
+// Reads a config file (JSON, as trial_config_from_json); an empty path gives the defaults. Throws
+// Error naming the file if it cannot be read or parsed.
+TrialConfig read_trial_config(const std::string& path);
 
 }  // namespace graspecmf::sim

@@ -1,0 +1,78 @@
+#pragma once
+// Building an ACRONYM-style dataset folder: for each object (a procedural mug or a user mesh),
+// antipodal grasp candidates labelled by the MuJoCo shake test, written as
+//   OUT/grasps/<Category>_<name>_<scale>.h5   (the ACRONYM layout, written last, atomically)
+//   OUT/meshes/<Category>/<name>.obj          (the mesh the record names)
+//   OUT/splits.json, OUT/manifest.json, OUT/preview.png, OUT/log.jsonl (timings)
+// Resumable: objects whose grasp file exists are not redone, and every file except log.jsonl is
+// byte-identical to an uninterrupted run's.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "graspecmf/dataset/antipodal_candidates.hpp"
+#include "graspecmf/geometry/convex_decomposition.hpp"
+#include "graspecmf/geometry/procedural_mug.hpp"
+#include "graspecmf/sim/trial_config.hpp"
+
+namespace graspecmf::dataset {
+
+// One object to generate: a procedural mug, or a mesh file (metric = file × scale).
+struct ObjectSource {
+  std::string name;      // unique within the dataset, [A-Za-z0-9-] only
+  std::string category;  // "Mug" or "Object"
+  std::optional<geometry::MugParameters> mug;
+  std::filesystem::path mesh_file;
+  double scale = 1.0;
+};
+
+// count procedural mugs, named mug-<seed>-<index>, with parameters drawn from the seed.
+std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_t seed);
+// Every .obj/.stl/.ply file directly in dir (sorted by name), named after the file's stem with
+// other characters replaced by '-'. Throws Error if dir is missing or holds no mesh file or two
+// files map to the same name.
+std::vector<ObjectSource> mesh_folder_sources(const std::filesystem::path& dir, double scale);
+
+struct MakeDatasetOptions {
+  std::filesystem::path out;
+  std::vector<ObjectSource> objects;
+  std::string preset;         // recorded in the manifest when set
+  std::uint64_t seed = 0;     // candidate sampling and the split
+  double density = 150.0;     // kg/m³ (ACRONYM uses 150 for every object)
+  std::size_t val_count = 0;  // objects in the validation and test splits; the rest train
+  std::size_t test_count = 0;
+  AntipodalOptions candidates;
+  sim::TrialConfig trial;
+  geometry::DecompositionOptions decomposition;
+  std::filesystem::path cache;  // decomposition cache; empty = sim::default_decomposition_cache()
+  int threads = 1;
+};
+
+struct ObjectOutcome {
+  std::string name;
+  std::string grasp_file;  // relative to out; empty when skipped
+  std::string skipped;     // the reason, empty when the object was made
+  bool resumed = false;    // its grasp file was already there
+  std::size_t candidates = 0, successful = 0;
+  std::size_t unstable = 0;  // trials that went unstable (0 when resumed: files do not record it)
+  double seconds = 0.0;
+};
+
+struct DatasetProgress {
+  // Trials finished over all objects and the planned total (objects × candidates requested).
+  std::function<void(std::size_t done, std::size_t total)> trials;
+  // Called after each object is made, resumed or skipped.
+  std::function<void(const ObjectOutcome&)> object;
+};
+
+// Makes (or resumes) the dataset; returns one outcome per object. Throws Error at once if out
+// cannot be written, if it holds a dataset made with other options, or if the options are invalid;
+// an object whose mesh is unreadable or not watertight is skipped with its reason.
+std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& options,
+                                        const DatasetProgress& progress = {});
+
+}  // namespace graspecmf::dataset

@@ -1,0 +1,156 @@
+#include "graspecmf/dataset/make_dataset.hpp"
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "../geometry/test_meshes.hpp"
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/data/dataset.hpp"
+#include "graspecmf/data/splits.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
+#include "test_support.hpp"
+
+namespace graspecmf::dataset {
+namespace {
+
+namespace fs = std::filesystem;
+using graspecmf::testing::read_file;
+using graspecmf::testing::ScratchDir;
+
+// Two small procedural mugs with a few candidates each: a few seconds in all.
+MakeDatasetOptions small_mugs(const fs::path& out, const fs::path& cache) {
+  MakeDatasetOptions o;
+  o.out = out;
+  o.cache = cache;
+  o.objects = procedural_mug_sources(2, 11);
+  o.seed = 11;
+  o.candidates.num_grasps = 6;
+  o.val_count = 1;
+  return o;
+}
+
+// Every file under root except the timing log, by relative path.
+std::map<std::string, std::string> dataset_files(const fs::path& root) {
+  std::map<std::string, std::string> files;
+  for (const auto& entry : fs::recursive_directory_iterator(root)) {
+    if (!entry.is_regular_file() || entry.path().filename() == "log.jsonl") continue;
+    files[fs::relative(entry.path(), root).string()] = read_file(entry.path());
+  }
+  return files;
+}
+
+TEST(MakeDataset, WritesAnAcronymFolderThatTheDatasetLoaderReads) {
+  const ScratchDir dir;
+  const std::vector<ObjectOutcome> outcomes = make_dataset(small_mugs(dir / "out", dir / "cache"));
+  ASSERT_EQ(outcomes.size(), 2u);
+  data::DatasetOptions loader;
+  loader.min_successful = 0;
+  const data::AcronymDataset ds = data::AcronymDataset::open(dir / "out", loader);
+  ASSERT_EQ(ds.objects().size(), 2u);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const data::ObjectEntry& entry = ds.objects()[i];
+    EXPECT_EQ(entry.name, "Mug_mug-11-000" + std::to_string(i) + "_1");
+    EXPECT_EQ(entry.num_grasps, outcomes[i].candidates);
+    EXPECT_EQ(entry.num_successful, outcomes[i].successful);
+    EXPECT_GT(entry.num_grasps, 0u);
+    const data::AcronymGraspFile record = data::read_acronym_file(entry.grasp_file);
+    ASSERT_TRUE(record.qualities.has_value());
+    EXPECT_EQ(record.qualities->motion_shaking_linear.size(), record.size());
+    ASSERT_TRUE(record.object.mass.has_value());
+    EXPECT_GT(*record.object.mass, 0.0);
+    EXPECT_EQ(data::AcronymDataset::load(entry).grasps.size(), entry.num_successful);
+  }
+  const nlohmann::json manifest = nlohmann::json::parse(read_file(dir / "out/manifest.json"));
+  EXPECT_EQ(manifest["options"]["candidates"]["num_grasps"], 6);
+  EXPECT_EQ(manifest["options"]["objects"][0]["mug"]["body"].is_string(), true);
+  EXPECT_TRUE(fs::exists(dir / "out/preview.png"));
+  // Objects with < 100 successful grasps stay out of the split.
+  const data::DatasetSplit split = data::read_split_file(dir / "out/splits.json");
+  EXPECT_TRUE(split.train.empty() && split.val.empty() && split.test.empty());
+}
+
+TEST(MakeDataset, AnInterruptedRunResumesToByteIdenticalFiles) {
+  const ScratchDir dir;
+  make_dataset(small_mugs(dir / "whole", dir / "cache"));
+  // Interrupt the second run right after its first object is written.
+  DatasetProgress stop;
+  stop.object = [](const ObjectOutcome&) { throw std::runtime_error("interrupted"); };
+  EXPECT_THROW(make_dataset(small_mugs(dir / "resumed", dir / "cache"), stop), std::runtime_error);
+  EXPECT_EQ(dataset_files(dir / "resumed").size(), 3u);  // manifest, mesh, grasp file
+  const std::vector<ObjectOutcome> outcomes =
+      make_dataset(small_mugs(dir / "resumed", dir / "cache"));
+  EXPECT_TRUE(outcomes[0].resumed);
+  EXPECT_FALSE(outcomes[1].resumed);
+  const auto whole = dataset_files(dir / "whole");
+  const auto resumed = dataset_files(dir / "resumed");
+  ASSERT_EQ(whole.size(), resumed.size());
+  for (const auto& [name, bytes] : whole) {
+    ASSERT_TRUE(resumed.count(name)) << name;
+    EXPECT_TRUE(resumed.at(name) == bytes) << name << " differs";
+  }
+}
+
+TEST(MakeDataset, RefusesAFolderMadeWithOtherOptions) {
+  const ScratchDir dir;
+  MakeDatasetOptions o = small_mugs(dir / "out", dir / "cache");
+  o.objects.resize(1);
+  make_dataset(o);
+  o.candidates.num_grasps = 7;
+  EXPECT_THROW(make_dataset(o), Error);
+}
+
+TEST(MakeDataset, UnwritableOutputFailsAtOnce) {
+  const ScratchDir dir;
+  graspecmf::testing::write_file(dir / "a-file", "x");
+  MakeDatasetOptions o = small_mugs(dir / "a-file" / "out", dir / "cache");
+  bool called = false;
+  DatasetProgress progress;
+  progress.trials = [&](std::size_t, std::size_t) { called = true; };
+  EXPECT_THROW(make_dataset(o, progress), Error);
+  EXPECT_FALSE(called);
+}
+
+TEST(MakeDataset, UserMeshesOpenOnesAreSkippedAndTheRunGoesOn) {
+  const ScratchDir dir;
+  fs::create_directories(dir / "meshes");
+  // A 5 × 5 × 8 cm box in centimetres, and the same box with a face missing.
+  geometry::TriangleMesh box = geometry::testing::make_box({-2.5, -2.5, 0}, {2.5, 2.5, 8});
+  geometry::write_mesh(box, dir / "meshes/box.obj");
+  box.triangles.pop_back();
+  geometry::write_mesh(box, dir / "meshes/open box.obj");
+  MakeDatasetOptions o;
+  o.out = dir / "out";
+  o.cache = dir / "cache";
+  o.objects = mesh_folder_sources(dir / "meshes", 0.01);
+  ASSERT_EQ(o.objects.size(), 2u);
+  EXPECT_EQ(o.objects[1].name, "open-box");
+  o.candidates.num_grasps = 4;
+  const std::vector<ObjectOutcome> outcomes = make_dataset(o);
+  EXPECT_TRUE(outcomes[0].skipped.empty()) << outcomes[0].skipped;
+  EXPECT_EQ(outcomes[0].candidates, 4u);
+  EXPECT_NE(outcomes[1].skipped.find("watertight"), std::string::npos) << outcomes[1].skipped;
+  EXPECT_TRUE(fs::exists(dir / "out/grasps/Object_box_0.01.h5"));
+  const data::AcronymGraspFile record =
+      data::read_acronym_file(dir / "out/grasps/Object_box_0.01.h5");
+  EXPECT_EQ(record.object.file, "meshes/Object/box.obj");
+  EXPECT_DOUBLE_EQ(record.object.scale, 0.01);
+}
+
+TEST(MakeDataset, BadOptionsAreErrors) {
+  const ScratchDir dir;
+  EXPECT_THROW(mesh_folder_sources(dir / "missing", 1.0), Error);
+  EXPECT_THROW(mesh_folder_sources(dir.path(), 1.0), Error);  // no meshes
+  MakeDatasetOptions o = small_mugs(dir / "out", dir / "cache");
+  o.density = -1;
+  EXPECT_THROW(make_dataset(o), Error);
+  o = small_mugs(dir / "out", dir / "cache");
+  o.objects[1].name = o.objects[0].name;
+  EXPECT_THROW(make_dataset(o), Error);
+  o = small_mugs(dir / "out", dir / "cache");
+  o.objects.clear();
+  EXPECT_THROW(make_dataset(o), Error);
+}
+
+}  // namespace
+}  // namespace graspecmf::dataset
