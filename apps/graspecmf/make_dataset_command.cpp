@@ -62,12 +62,15 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
 
 void run(const MakeDatasetArgs& a) {
   const dataset::MakeDatasetOptions o = options_from(a);
-  std::cerr << fmt::format("make-dataset: {} objects × {} candidates into {} on {} threads\n",
-                           o.objects.size(), o.candidates.num_grasps, o.out.string(), o.threads);
   std::unique_ptr<ProgressLine> progress;
   dataset::DatasetProgress callbacks;
   callbacks.trials = [&](std::size_t done, std::size_t total) {
-    if (!progress) progress = std::make_unique<ProgressLine>("grasps", total);
+    if (!progress) {  // the output folder has been checked by now
+      std::cerr << fmt::format("make-dataset: {} objects × {} candidates into {} on {} threads\n",
+                               o.objects.size(), o.candidates.num_grasps, o.out.string(),
+                               o.threads);
+      progress = std::make_unique<ProgressLine>("grasps", total);
+    }
     progress->update(done);
   };
   std::size_t made = 0, resumed = 0, skipped = 0;

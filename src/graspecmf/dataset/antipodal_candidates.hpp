@@ -17,7 +17,7 @@ using Vec3 = Eigen::Vector3d;
 
 struct AntipodalOptions {
   std::size_t num_grasps = 2000;  // stop after this many candidates
-  std::size_t max_attempts = 0;   // surface points drawn at most; 0 = 50 × num_grasps
+  std::size_t max_attempts = 0;   // surface points drawn at most; 0 = max(50 × num_grasps, 10⁴)
   // Half-angle (rad) of the cone around the inward normal that the ray direction is drawn from,
   // uniformly over the cone's solid angle: 0.15 rad ≈ 8.6°, well inside the friction cone.
   double ray_cone = 0.15;
