@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include "graspecmf/core/error.hpp"
+
 namespace graspecmf {
 namespace {
 
@@ -56,6 +58,20 @@ TEST(Rng, IndexIsUniformOverSmallRange) {
   const int n = 70000;
   for (int i = 0; i < n; ++i) ++counts[rng.index(7)];
   for (const int count : counts) EXPECT_NEAR(count, n / 7.0, 5 * std::sqrt(n / 7.0));
+}
+
+TEST(Rng, RestoredStateContinuesTheSameStream) {
+  Rng rng(11);
+  for (int i = 0; i < 5; ++i) rng.normal();  // leaves a spare normal pending
+  const std::string saved = rng.state();
+  std::vector<double> expected;
+  for (int i = 0; i < 9; ++i) expected.push_back(i % 2 ? rng.normal() : rng.uniform());
+  Rng other(99);
+  other.restore(saved);
+  for (int i = 0; i < 9; ++i) {
+    EXPECT_EQ(i % 2 ? other.normal() : other.uniform(), expected[static_cast<std::size_t>(i)]);
+  }
+  EXPECT_THROW(other.restore("not a state"), Error);
 }
 
 }  // namespace

@@ -1,7 +1,11 @@
 #include "graspecmf/core/random.hpp"
 
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <sstream>
+
+#include "graspecmf/core/error.hpp"
 
 namespace graspecmf {
 
@@ -31,6 +35,32 @@ std::size_t Rng::index(std::size_t n) {
   std::uint64_t x = engine_();
   while (x >= limit) x = engine_();
   return static_cast<std::size_t>(x % bound);
+}
+
+std::string Rng::state() const {
+  std::ostringstream out;
+  out << engine_ << ' ' << has_spare_normal_ << ' ';
+  out.precision(17);
+  out << std::hexfloat << spare_normal_;
+  return out.str();
+}
+
+void Rng::restore(const std::string& text) {
+  std::istringstream in(text);
+  std::mt19937_64 engine;
+  bool has_spare = false;
+  double spare = 0.0;
+  in >> engine >> has_spare;
+  // Hex floats are read through strtod, as istream's hexfloat input is not portable.
+  std::string spare_text;
+  in >> spare_text;
+  char* end = nullptr;
+  spare = std::strtod(spare_text.c_str(), &end);
+  if (!in || end == spare_text.c_str() || *end != '\0')
+    throw Error("invalid random generator state");
+  engine_ = engine;
+  has_spare_normal_ = has_spare;
+  spare_normal_ = spare;
 }
 
 }  // namespace graspecmf

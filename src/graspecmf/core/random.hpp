@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <random>
+#include <string>
 
 namespace graspecmf {
 
@@ -22,6 +23,11 @@ class Rng {
   double normal();
   // Uniform integer in [0, n) without modulo bias; n must be > 0.
   std::size_t index(std::size_t n);
+
+  // The complete state as text, and back: a restored generator continues the same stream (for
+  // resumable jobs). restore throws Error on text that state() did not produce.
+  std::string state() const;
+  void restore(const std::string& text);
 
  private:
   std::mt19937_64 engine_;

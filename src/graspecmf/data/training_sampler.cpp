@@ -1,0 +1,133 @@
+#include "graspecmf/data/training_sampler.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <sstream>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/lie/rotation_sets.hpp"
+
+namespace graspecmf::data {
+
+Augmentation parse_augmentation(const std::string& name) {
+  if (name == "none") return Augmentation::none;
+  if (name == "z") return Augmentation::z;
+  if (name == "so3") return Augmentation::so3;
+  throw Error("unknown augmentation '" + name + "' (expected none, z or so3)");
+}
+
+std::string to_string(Augmentation augmentation) {
+  switch (augmentation) {
+    case Augmentation::none:
+      return "none";
+    case Augmentation::z:
+      return "z";
+    case Augmentation::so3:
+      return "so3";
+  }
+  return "?";
+}
+
+ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,
+                                const std::vector<lie::Pose>& grasps, const Eigen::Matrix3d& g,
+                                double position_scale) {
+  if (cloud.points.empty()) throw Error("an object sample needs at least one point");
+  ObjectSample sample;
+  sample.rotation = g;
+  sample.scale = position_scale;
+  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& q : cloud.points) sum += g * q;
+  sample.centroid = sum / static_cast<double>(cloud.points.size());
+  const auto push = [&](std::vector<float>& out, const Eigen::Vector3d& v) {
+    for (int k = 0; k < 3; ++k) out.push_back(static_cast<float>(v[k]));
+  };
+  for (const Eigen::Vector3d& q : cloud.points) {
+    push(sample.points, position_scale * (g * q - sample.centroid));
+  }
+  for (const lie::Pose& grasp : grasps) {
+    const Eigen::Matrix3d R = g * grasp.R;
+    for (int r = 0; r < 3; ++r) push(sample.rotations, R.row(r).transpose());
+    push(sample.positions, position_scale * (g * grasp.p - sample.centroid));
+  }
+  return sample;
+}
+
+TrainingSampler::TrainingSampler(std::vector<GraspObject> objects,
+                                 const TrainingSamplerOptions& options, std::uint64_t seed)
+    : objects_(std::move(objects)), options_(options), rng_(seed) {
+  if (objects_.empty()) throw Error("training needs at least one object");
+  if (options.objects_per_step == 0 || options.points == 0 || !(options.position_scale > 0)) {
+    throw Error("training sampler: objects_per_step, points and position_scale must be positive");
+  }
+  surfaces_.reserve(objects_.size());
+  for (const GraspObject& object : objects_) {
+    if (object.grasps.empty()) throw Error("object " + object.name + " has no successful grasp");
+    surfaces_.emplace_back(object.mesh);  // objects_ is never resized, so the reference holds
+  }
+}
+
+std::vector<ObjectSample> TrainingSampler::next_step() {
+  std::vector<ObjectSample> step;
+  for (std::size_t k = 0; k < options_.objects_per_step; ++k) {
+    if (cursor_ == order_.size()) {  // a new epoch in a fresh order
+      order_.resize(objects_.size());
+      std::iota(order_.begin(), order_.end(), std::size_t{0});
+      for (std::size_t i = order_.size(); i > 1; --i)
+        std::swap(order_[i - 1], order_[rng_.index(i)]);
+      cursor_ = 0;
+    }
+    const std::size_t index = order_[cursor_++];
+    const GraspObject& object = objects_[index];
+    // A partial Fisher–Yates shuffle picks the grasps without replacement.
+    std::vector<std::size_t> pick(object.grasps.size());
+    std::iota(pick.begin(), pick.end(), std::size_t{0});
+    const std::size_t count = options_.grasps_per_object == 0
+                                  ? pick.size()
+                                  : std::min(options_.grasps_per_object, pick.size());
+    std::vector<lie::Pose> grasps;
+    for (std::size_t i = 0; i < count; ++i) {
+      std::swap(pick[i], pick[i + rng_.index(pick.size() - i)]);
+      grasps.push_back(object.grasps[pick[i]]);
+    }
+    Eigen::Matrix3d g = Eigen::Matrix3d::Identity();
+    if (options_.augmentation == Augmentation::so3) {
+      g = lie::random_rotation(rng_);
+    } else if (options_.augmentation == Augmentation::z) {
+      g = Eigen::AngleAxisd(2.0 * M_PI * rng_.uniform(), Eigen::Vector3d::UnitZ())
+              .toRotationMatrix();
+    }
+    ObjectSample sample = make_object_sample(surfaces_[index].sample(options_.points, rng_), grasps,
+                                             g, options_.position_scale);
+    sample.object = index;
+    step.push_back(std::move(sample));
+  }
+  return step;
+}
+
+std::string TrainingSampler::state() const {
+  std::ostringstream out;
+  out << cursor_ << ' ' << order_.size();
+  for (std::size_t i : order_) out << ' ' << i;
+  out << '\n' << rng_.state();
+  return out.str();
+}
+
+void TrainingSampler::restore(const std::string& text) {
+  std::istringstream in(text);
+  std::size_t cursor = 0, size = 0;
+  in >> cursor >> size;
+  std::vector<std::size_t> order(size);
+  for (std::size_t& i : order) in >> i;
+  const bool valid =
+      in && cursor <= size && (size == 0 || size == objects_.size()) &&
+      std::all_of(order.begin(), order.end(), [&](std::size_t i) { return i < objects_.size(); });
+  if (!valid) throw Error("invalid training sampler state");
+  std::string rng_state;
+  in.ignore(1);
+  std::getline(in, rng_state);
+  rng_.restore(rng_state);
+  order_ = std::move(order);
+  cursor_ = cursor;
+}
+
+}  // namespace graspecmf::data

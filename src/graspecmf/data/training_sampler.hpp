@@ -1,0 +1,71 @@
+#pragma once
+// What one training step sees (METHOD.md §5, §8): a few objects, each with a fresh surface point
+// cloud and a subset of its successful grasps, rotated by the augmentation, centred on the cloud's
+// centroid and scaled by the network's position scale. Torch-free: plain float arrays.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "graspecmf/core/random.hpp"
+#include "graspecmf/data/dataset.hpp"
+#include "graspecmf/geometry/surface_sampling.hpp"
+
+namespace graspecmf::data {
+
+// The paper's augmentation settings: none, a random rotation about the world z axis, or a
+// Haar-uniform random rotation.
+enum class Augmentation { none, z, so3 };
+// "none", "z" or "so3" → the setting; throws Error for another name.
+Augmentation parse_augmentation(const std::string& name);
+std::string to_string(Augmentation augmentation);
+
+// One object in network units: x_net = scale · (g x − c), with g the augmentation rotation and c
+// the centroid of the rotated cloud.
+struct ObjectSample {
+  std::size_t object = 0;                                  // index into the sampler's objects
+  std::vector<float> points;                               // N × 3
+  std::vector<float> rotations;                            // G × 9, row-major R
+  std::vector<float> positions;                            // G × 3
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // g
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();      // c, metres, after the rotation
+  double scale = 1.0;
+};
+
+struct TrainingSamplerOptions {
+  std::size_t objects_per_step = 4;
+  std::size_t grasps_per_object = 300;  // drawn without replacement; 0 or more than available = all
+  std::size_t points = 1024;
+  double position_scale = 8.0;
+  Augmentation augmentation = Augmentation::so3;
+};
+
+// The cloud of `points` surface points of mesh, rotated by g, centred and scaled; grasps likewise.
+ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,
+                                const std::vector<lie::Pose>& grasps, const Eigen::Matrix3d& g,
+                                double position_scale);
+
+class TrainingSampler {
+ public:
+  // Throws Error if there are no objects, an object has no grasps, or an option is zero.
+  TrainingSampler(std::vector<GraspObject> objects, const TrainingSamplerOptions& options,
+                  std::uint64_t seed);
+  TrainingSampler(const TrainingSampler&) = delete;  // the surface samplers refer to objects_
+  TrainingSampler& operator=(const TrainingSampler&) = delete;
+  // The next step's objects: epochs visit every object once in a fresh shuffled order.
+  std::vector<ObjectSample> next_step();
+  const std::vector<GraspObject>& objects() const { return objects_; }
+  // Complete state as text (generator, epoch order, position); restore continues identically.
+  std::string state() const;
+  void restore(const std::string& text);
+
+ private:
+  std::vector<GraspObject> objects_;
+  std::vector<geometry::SurfaceSampler> surfaces_;
+  TrainingSamplerOptions options_;
+  Rng rng_;
+  std::vector<std::size_t> order_;
+  std::size_t cursor_ = 0;
+};
+
+}  // namespace graspecmf::data

@@ -1,0 +1,142 @@
+#include "graspecmf/data/training_sampler.hpp"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <set>
+
+#include "../geometry/test_meshes.hpp"
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/lie/rotation_sets.hpp"
+
+namespace graspecmf::data {
+namespace {
+
+// n box objects of different sizes, each with `grasps` random grasps.
+std::vector<GraspObject> boxes(std::size_t n, std::size_t grasps) {
+  std::vector<GraspObject> objects;
+  Rng rng(1);
+  for (std::size_t i = 0; i < n; ++i) {
+    GraspObject object;
+    object.name = "box" + std::to_string(i);
+    const double size = 0.05 + 0.01 * static_cast<double>(i);
+    object.mesh =
+        geometry::testing::make_box(Eigen::Vector3d(0, 0, 0), Eigen::Vector3d::Constant(size));
+    for (std::size_t g = 0; g < grasps; ++g) {
+      lie::Pose pose;
+      pose.R = lie::random_rotation(rng);
+      pose.p = Eigen::Vector3d(rng.uniform(), rng.uniform(), rng.uniform()) * size;
+      object.grasps.push_back(pose);
+    }
+    objects.push_back(std::move(object));
+  }
+  return objects;
+}
+
+Eigen::Vector3d at(const std::vector<float>& v, std::size_t i) {
+  return Eigen::Vector3d(v[3 * i], v[3 * i + 1], v[3 * i + 2]);
+}
+
+TEST(TrainingSampler, ObjectSampleIsRotatedCentredAndScaled) {
+  const std::vector<GraspObject> objects = boxes(1, 5);
+  const geometry::SurfacePoints cloud = geometry::sample_surface(objects[0].mesh, 200, 3);
+  Rng rng(4);
+  const Eigen::Matrix3d g = lie::random_rotation(rng);
+  const ObjectSample s = make_object_sample(cloud, objects[0].grasps, g, 8.0);
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+  for (std::size_t i = 0; i < 200; ++i) mean += at(s.points, i);
+  EXPECT_LT((mean / 200).norm(), 1e-5);
+  // Undoing the transformation recovers the inputs (float precision).
+  for (std::size_t i = 0; i < 200; ++i) {
+    const Eigen::Vector3d back = g.transpose() * (at(s.points, i) / 8.0 + s.centroid);
+    EXPECT_LT((back - cloud.points[i]).norm(), 1e-6);
+  }
+  for (std::size_t k = 0; k < 5; ++k) {
+    Eigen::Matrix3d R;
+    for (int r = 0; r < 3; ++r) R.row(r) = at(s.rotations, 3 * k + static_cast<std::size_t>(r));
+    EXPECT_LT((g.transpose() * R - objects[0].grasps[k].R).norm(), 1e-6);
+    const Eigen::Vector3d p = g.transpose() * (at(s.positions, k) / 8.0 + s.centroid);
+    EXPECT_LT((p - objects[0].grasps[k].p).norm(), 1e-6);
+  }
+}
+
+TEST(TrainingSampler, EpochsVisitEveryObjectOnceAndGraspsAreDistinct) {
+  TrainingSamplerOptions options;
+  options.objects_per_step = 2;
+  options.grasps_per_object = 7;
+  options.points = 64;
+  TrainingSampler sampler(boxes(5, 10), options, 9);
+  std::map<std::size_t, int> visits;
+  for (int step = 0; step < 5; ++step) {
+    for (const ObjectSample& s : sampler.next_step()) {
+      ++visits[s.object];
+      EXPECT_EQ(s.points.size(), 64u * 3u);
+      ASSERT_EQ(s.positions.size(), 7u * 3u);
+      std::set<std::vector<float>> distinct;
+      for (std::size_t k = 0; k < 7; ++k) {
+        distinct.insert({s.rotations.begin() + 9 * k, s.rotations.begin() + 9 * k + 9});
+      }
+      EXPECT_EQ(distinct.size(), 7u);
+    }
+  }
+  ASSERT_EQ(visits.size(), 5u);  // 10 draws = 2 epochs of 5 objects
+  for (const auto& [object, count] : visits) EXPECT_EQ(count, 2) << object;
+}
+
+TEST(TrainingSampler, AugmentationSettingsDrawTheRightRotations) {
+  TrainingSamplerOptions options;
+  options.objects_per_step = 3;
+  options.points = 16;
+  for (Augmentation a : {Augmentation::none, Augmentation::z, Augmentation::so3}) {
+    options.augmentation = a;
+    TrainingSampler sampler(boxes(3, 4), options, 5);
+    for (const ObjectSample& s : sampler.next_step()) {
+      EXPECT_NEAR(s.rotation.determinant(), 1.0, 1e-12);
+      EXPECT_LT((s.rotation.transpose() * s.rotation - Eigen::Matrix3d::Identity()).norm(), 1e-12);
+      if (a == Augmentation::none) {
+        EXPECT_TRUE(s.rotation.isIdentity(0));
+      } else if (a == Augmentation::z) {
+        EXPECT_NEAR(s.rotation(2, 2), 1.0, 1e-12);
+      } else {
+        EXPECT_LT(std::abs(s.rotation(2, 2)), 1.0 - 1e-9);
+      }
+    }
+  }
+  EXPECT_EQ(parse_augmentation(to_string(Augmentation::z)), Augmentation::z);
+  EXPECT_THROW(parse_augmentation("SO3"), Error);
+}
+
+TEST(TrainingSampler, RestoredStateGivesTheSameSteps) {
+  TrainingSamplerOptions options;
+  options.objects_per_step = 2;
+  options.grasps_per_object = 3;
+  options.points = 32;
+  TrainingSampler a(boxes(3, 6), options, 21);
+  a.next_step();
+  a.next_step();
+  const std::string saved = a.state();
+  const std::vector<ObjectSample> expected = a.next_step(), expected2 = a.next_step();
+  TrainingSampler b(boxes(3, 6), options, 777);
+  b.restore(saved);
+  const std::vector<ObjectSample> got = b.next_step(), got2 = b.next_step();
+  for (std::size_t i = 0; i < 2; ++i) {
+    EXPECT_EQ(got[i].object, expected[i].object);
+    EXPECT_EQ(got[i].points, expected[i].points);
+    EXPECT_EQ(got[i].rotations, expected[i].rotations);
+    EXPECT_EQ(got2[i].positions, expected2[i].positions);
+  }
+  EXPECT_THROW(b.restore("5 2 0 9\nxx"), Error);
+}
+
+TEST(TrainingSampler, RejectsUnusableInput) {
+  EXPECT_THROW(TrainingSampler({}, {}, 1), Error);
+  std::vector<GraspObject> objects = boxes(2, 3);
+  objects[1].grasps.clear();
+  EXPECT_THROW(TrainingSampler(objects, {}, 1), Error);
+  TrainingSamplerOptions zero;
+  zero.points = 0;
+  EXPECT_THROW(TrainingSampler(boxes(1, 1), zero, 1), Error);
+}
+
+}  // namespace
+}  // namespace graspecmf::data
