@@ -1,0 +1,213 @@
+#include "graspecmf/geometry/point_cloud_io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "graspecmf/core/error.hpp"
+
+namespace graspecmf::geometry {
+namespace fs = std::filesystem;
+namespace {
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+std::string read_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open point cloud");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return buffer.str();
+}
+
+std::vector<Vec3> read_xyz(const fs::path& path, const std::string& bytes) {
+  std::vector<Vec3> points;
+  std::istringstream lines(bytes);
+  std::string line;
+  std::size_t number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    const std::size_t start = line.find_first_not_of(" \t\r");
+    if (start == std::string::npos || line[start] == '#') continue;
+    std::istringstream row(line);
+    Vec3 p;
+    if (!(row >> p.x() >> p.y() >> p.z())) {
+      throw Error(path.string() + ": line " + std::to_string(number) + " is not x y z");
+    }
+    points.push_back(p);
+  }
+  return points;
+}
+
+// Reads `count` little-endian values of 4 or 8 bytes starting at data.
+template <typename Float>
+Float load(const char* data) {
+  Float value;
+  std::memcpy(&value, data, sizeof(Float));
+  return value;
+}
+
+std::vector<Vec3> read_npy(const fs::path& path, const std::string& bytes) {
+  const auto fail = [&](const std::string& why) { return Error(path.string() + ": " + why); };
+  if (bytes.size() < 10 || bytes.compare(0, 6, "\x93NUMPY") != 0) throw fail("not a .npy file");
+  const int major = static_cast<unsigned char>(bytes[6]);
+  const std::size_t length_bytes = major == 1 ? 2 : 4;
+  std::size_t header_length = 0;
+  for (std::size_t i = 0; i < length_bytes; ++i) {
+    header_length |= static_cast<std::size_t>(static_cast<unsigned char>(bytes[8 + i])) << (8 * i);
+  }
+  const std::size_t data_start = 8 + length_bytes + header_length;
+  if (bytes.size() < data_start) throw fail("truncated .npy header");
+  const std::string header = bytes.substr(8 + length_bytes, header_length);
+  std::size_t width = 0;
+  if (header.find("'<f4'") != std::string::npos) width = 4;
+  if (header.find("'<f8'") != std::string::npos) width = 8;
+  if (width == 0) throw fail(".npy data must be little-endian float32 or float64");
+  if (header.find("'fortran_order': False") == std::string::npos) {
+    throw fail(".npy data must be in C order");
+  }
+  const std::size_t shape_at = header.find("'shape': (");
+  std::size_t rows = 0, cols = 0;
+  if (shape_at == std::string::npos ||
+      std::sscanf(header.c_str() + shape_at, "'shape': (%zu, %zu)", &rows, &cols) != 2 ||
+      cols != 3) {
+    throw fail(".npy array must have shape (N, 3)");
+  }
+  if (bytes.size() != data_start + rows * 3 * width) throw fail("truncated .npy data");
+  std::vector<Vec3> points(rows);
+  const char* data = bytes.data() + data_start;
+  for (std::size_t i = 0; i < 3 * rows; ++i) {
+    points[i / 3][static_cast<Eigen::Index>(i % 3)] =
+        width == 4 ? load<float>(data + 4 * i) : load<double>(data + 8 * i);
+  }
+  return points;
+}
+
+struct PlyProperty {
+  std::string name;
+  std::size_t size = 0;  // bytes in binary files
+  bool floating = false;
+};
+
+std::size_t ply_type_size(const std::string& type) {
+  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
+  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
+  if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" ||
+      type == "float32") {
+    return 4;
+  }
+  if (type == "double" || type == "float64") return 8;
+  return 0;
+}
+
+std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
+  const auto fail = [&](const std::string& why) { return Error(path.string() + ": " + why); };
+  const std::size_t end = bytes.find("end_header\n");
+  if (bytes.compare(0, 4, "ply\n") != 0 || end == std::string::npos) throw fail("not a PLY file");
+  std::istringstream header(bytes.substr(0, end));
+  std::string line, format;
+  std::size_t count = 0;
+  bool in_vertex = false, vertex_seen = false;
+  std::vector<PlyProperty> properties;
+  while (std::getline(header, line)) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if (keyword == "format") {
+      words >> format;
+    } else if (keyword == "element") {
+      std::string name;
+      words >> name;
+      if (vertex_seen && !in_vertex) continue;
+      in_vertex = name == "vertex";
+      if (in_vertex) {
+        words >> count;
+        vertex_seen = true;
+      } else if (!vertex_seen) {
+        throw fail("PLY elements before the vertices are not supported");
+      }
+    } else if (keyword == "property" && in_vertex) {
+      std::string type, name;
+      words >> type >> name;
+      if (type == "list") throw fail("PLY vertex list properties are not supported");
+      const std::size_t size = ply_type_size(type);
+      if (size == 0) throw fail("unknown PLY property type " + type);
+      properties.push_back(
+          {name, size,
+           type == "float" || type == "float32" || type == "double" || type == "float64"});
+    }
+  }
+  if (format != "ascii" && format != "binary_little_endian") {
+    throw fail("PLY format must be ascii or binary_little_endian");
+  }
+  int axis[3] = {-1, -1, -1};
+  for (std::size_t i = 0; i < properties.size(); ++i) {
+    for (int k = 0; k < 3; ++k) {
+      if (properties[i].name == std::string(1, static_cast<char>('x' + k))) {
+        if (!properties[i].floating) throw fail("PLY x, y, z must be float or double");
+        axis[k] = static_cast<int>(i);
+      }
+    }
+  }
+  if (axis[0] < 0 || axis[1] < 0 || axis[2] < 0) throw fail("PLY vertices need x, y and z");
+  std::vector<Vec3> points(count);
+  const std::size_t data_start = end + std::strlen("end_header\n");
+  if (format == "ascii") {
+    std::istringstream body(bytes.substr(data_start));
+    for (Vec3& p : points) {
+      std::vector<double> values(properties.size());
+      for (double& v : values) {
+        if (!(body >> v)) throw fail("truncated PLY vertex data");
+      }
+      for (int k = 0; k < 3; ++k) p[k] = values[static_cast<std::size_t>(axis[k])];
+    }
+    return points;
+  }
+  std::size_t stride = 0;
+  std::vector<std::size_t> offset;
+  for (const PlyProperty& property : properties) {
+    offset.push_back(stride);
+    stride += property.size;
+  }
+  if (bytes.size() < data_start + count * stride) throw fail("truncated PLY vertex data");
+  for (std::size_t i = 0; i < count; ++i) {
+    const char* vertex = bytes.data() + data_start + i * stride;
+    for (int k = 0; k < 3; ++k) {
+      const auto a = static_cast<std::size_t>(axis[k]);
+      points[i][k] = properties[a].size == 4 ? load<float>(vertex + offset[a])
+                                             : load<double>(vertex + offset[a]);
+    }
+  }
+  return points;
+}
+
+}  // namespace
+
+std::vector<Vec3> read_point_cloud(const fs::path& path) {
+  const std::string ext = lower_extension(path);
+  if (ext != ".xyz" && ext != ".txt" && ext != ".npy" && ext != ".ply") {
+    throw Error(path.string() + ": point clouds must be .xyz, .txt, .npy or .ply");
+  }
+  if (!fs::exists(path)) throw Error(path.string() + ": no such file");
+  const std::string bytes = read_bytes(path);
+  const std::vector<Vec3> points = ext == ".npy"   ? read_npy(path, bytes)
+                                   : ext == ".ply" ? read_ply(path, bytes)
+                                                   : read_xyz(path, bytes);
+  if (points.empty()) throw Error(path.string() + ": the point cloud is empty");
+  for (const Vec3& p : points) {
+    if (!p.allFinite())
+      throw Error(path.string() + ": the point cloud has a non-finite coordinate");
+  }
+  return points;
+}
+
+}  // namespace graspecmf::geometry
