@@ -1,0 +1,17 @@
+#pragma once
+// k nearest neighbours in feature space for dynamic graph convolutions (docs METHOD.md §3).
+
+#include <ATen/core/Tensor.h>
+
+#include <cstdint>
+
+namespace graspecmf::nn {
+
+// For features [B, N, D] (float32), the indices [B, N, k] (int64) of each row's k nearest rows
+// of the same batch entry by Euclidean distance: the row itself first, then the other k − 1 in
+// a deterministic order; of equally distant rows the lower index is taken. One GEMM for the
+// distances and a selection per row (no full sort); no gradient. Throws Error on a wrong shape,
+// k outside [1, N] or a non-finite feature.
+at::Tensor knn(const at::Tensor& features, int64_t k);
+
+}  // namespace graspecmf::nn

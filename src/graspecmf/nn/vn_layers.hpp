@@ -1,0 +1,49 @@
+#pragma once
+// Vector-neuron (VN) layers (docs METHOD.md §2). A VN feature is a float32 tensor [..., C, 3]:
+// C vector channels, a rotation acts on the last axis. Every map here commutes with rotations.
+// Weights start uniform in ±1/sqrt(in_channels) (the bound of PyTorch's nn.Linear default).
+
+#include <torch/nn/module.h>
+#include <torch/nn/pimpl.h>
+
+#include <cstdint>
+
+namespace graspecmf::nn {
+
+// Negative slope α of VN-LeakyReLU used throughout (the reference's 0.2).
+inline constexpr double kDefaultSlope = 0.2;
+
+// V' = W V over channels, no bias: [..., in, 3] → [..., out, 3]. Throws Error on a wrong shape.
+class VNLinearImpl : public torch::nn::Module {
+ public:
+  VNLinearImpl(int64_t in_channels, int64_t out_channels);
+  torch::Tensor forward(const torch::Tensor& v) const;
+
+  torch::Tensor weight;  // [out, in]
+};
+TORCH_MODULE(VNLinear);
+
+// VN-LeakyReLU of features q with directions d: q − (1−slope)·min(⟨q,d⟩,0)/(‖d‖²+1e-6)·d, the
+// inner products taken along `vector_dim` (size 3). d has q's channels or one shared channel
+// (broadcast). No shape checks: the layers below call it on shapes they have checked.
+torch::Tensor vn_leaky_relu(const torch::Tensor& q, const torch::Tensor& d, double slope,
+                            int64_t vector_dim = -1);
+
+// Mean of a VN feature over a non-vector axis `dim` (neighbours, points): equivariant pooling.
+torch::Tensor vn_mean_pool(const torch::Tensor& v, int64_t dim);
+
+// VN-Linear + VN-LeakyReLU: q = W_f V and d = W_d V both from the input V, then vn_leaky_relu.
+// [..., in, 3] → [..., out, 3]; d has `out` channels, or one when `shared_direction`.
+class VNLinearLeakyReLUImpl : public torch::nn::Module {
+ public:
+  VNLinearLeakyReLUImpl(int64_t in_channels, int64_t out_channels, bool shared_direction = false,
+                        double slope = kDefaultSlope);
+  torch::Tensor forward(const torch::Tensor& v) const;
+
+  VNLinear feature{nullptr};    // W_f: in → out
+  VNLinear direction{nullptr};  // W_d: in → out, or in → 1 when shared
+  double slope;
+};
+TORCH_MODULE(VNLinearLeakyReLU);
+
+}  // namespace graspecmf::nn
