@@ -9,6 +9,9 @@
 #include "graspecmf/core/version.hpp"
 #include "inspect_command.hpp"
 #include "make_dataset_command.hpp"
+#ifdef GRASPECMF_WITH_TORCH
+#include "model_commands.hpp"
+#endif
 #include "simulate_command.hpp"
 
 int main(int argc, char** argv) {
@@ -18,6 +21,9 @@ int main(int argc, char** argv) {
   graspecmf::apps::add_inspect_command(app);
   graspecmf::apps::add_simulate_command(app);
   graspecmf::apps::add_make_dataset_command(app);
+#ifdef GRASPECMF_WITH_TORCH
+  graspecmf::apps::add_model_commands(app);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,253 @@
+#include "model_commands.hpp"
+
+#include <fmt/format.h>
+#include <torch/torch.h>
+
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "graspecmf/core/atomic_file.hpp"
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/core/progress.hpp"
+#include "graspecmf/core/random.hpp"
+#include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/data/splits.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/geometry/point_cloud_io.hpp"
+#include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/gripper/panda.hpp"
+#include "graspecmf/train/evaluation.hpp"
+#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/train/trainer.hpp"
+
+namespace graspecmf::apps {
+namespace fs = std::filesystem;
+using nlohmann::json;
+namespace {
+
+constexpr int kDefaultThreads = 1;
+
+// ---- train ----
+
+struct TrainArgs {
+  std::string config, data, out;
+  int threads = kDefaultThreads;
+};
+
+void run_train(const TrainArgs& a) {
+  const train::TrainConfig config = train::read_train_config(a.config);
+  std::unique_ptr<ProgressLine> progress;
+  train::TrainCallbacks callbacks;
+  callbacks.step = [&](std::int64_t step, std::int64_t total) {
+    if (!progress)
+      progress = std::make_unique<ProgressLine>("training", static_cast<std::size_t>(total));
+    progress->update(static_cast<std::size_t>(step));
+  };
+  callbacks.record = [&](const json& record) {
+    if (record.contains("val_emd")) {
+      std::cerr << fmt::format("\nstep {}: validation loss {:.4f}, EMD {:.4f}\n",
+                               record["step"].get<std::int64_t>(), record["val_loss"].get<double>(),
+                               record["val_emd"].get<double>());
+    }
+  };
+  const train::TrainResult result = train::train(config, a.data, a.out, a.threads, callbacks);
+  if (progress) progress->finish();
+  std::cout << fmt::format(
+      "{} steps done{} in {}; run folder {}\n", result.steps,
+      result.resumed_from > 0 ? fmt::format(" (resumed from step {})", result.resumed_from) : "",
+      format_duration(result.seconds), a.out);
+}
+
+// ---- sample ----
+
+struct SampleArgs {
+  std::string model, mesh, points, acronym, mesh_root, out, solver;
+  double scale = 1.0, guidance = 0.0;
+  std::size_t num = 100;
+  int steps = 0, threads = kDefaultThreads;
+  std::uint64_t seed = 0;
+};
+
+// The input cloud in metres and the object record to write beside the grasps.
+std::pair<std::vector<Eigen::Vector3d>, data::AcronymObjectInfo> sample_input(const SampleArgs& a,
+                                                                              std::size_t points) {
+  const int sources = !a.mesh.empty() + !a.points.empty() + !a.acronym.empty();
+  if (sources != 1) throw Error("sample: give exactly one of --mesh, --points or --acronym");
+  data::AcronymObjectInfo info;
+  if (!a.points.empty()) {
+    std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
+    // A seeded subset when the file has more points than the model was trained with.
+    Rng rng(a.seed);
+    for (std::size_t i = 0; cloud.size() > points && i < points; ++i) {
+      std::swap(cloud[i], cloud[i + rng.index(cloud.size() - i)]);
+    }
+    cloud.resize(std::min(cloud.size(), points));
+    info.file = a.points;
+    return {cloud, info};
+  }
+  geometry::TriangleMesh mesh;
+  if (!a.mesh.empty()) {
+    mesh = geometry::scaled(geometry::read_mesh(a.mesh), a.scale);
+    info.file = a.mesh;
+    info.scale = a.scale;
+  } else {
+    const data::AcronymGraspFile record = data::read_acronym_file(a.acronym);
+    info = record.object;
+    mesh = geometry::scaled(
+        geometry::read_mesh(data::find_object_mesh(a.acronym, info.file, a.mesh_root)), info.scale);
+  }
+  return {geometry::sample_surface(mesh, points, a.seed).points, info};
+}
+
+void run_sample(const SampleArgs& a) {
+  at::set_num_threads(a.threads);
+  const train::TrainedModel trained = train::load_trained_model(a.model);
+  train::SamplingSettings settings = trained.config.sampling;
+  if (!a.solver.empty()) settings.solver = a.solver;
+  if (a.steps > 0) settings.steps = a.steps;
+  if (a.guidance != 0.0) settings.guidance = a.guidance;
+  const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
+  const auto [cloud, info] = sample_input(a, points);
+  if (cloud.size() < static_cast<std::size_t>(trained.config.model.encoder.k)) {
+    throw Error(fmt::format("sample: the cloud has {} points; the model needs at least {}",
+                            cloud.size(), trained.config.model.encoder.k));
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<lie::Pose> grasps =
+      train::sample_grasps(trained.model, cloud, trained.config, a.num, settings, a.seed);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  data::AcronymGraspFile record;
+  for (const lie::Pose& g : grasps) record.transforms.push_back(g.matrix());
+  record.gripper_configuration = 0.5 * gripper::panda::kMaxOpening;
+  record.object = info;
+  data::write_acronym_file(record, a.out);
+  std::cout << fmt::format("{} grasps ({} {} steps, guidance {}) in {:.2f} s → {}\n", a.num,
+                           settings.solver, settings.steps, settings.guidance, seconds, a.out);
+}
+
+// ---- evaluate ----
+
+struct EvaluateArgs {
+  std::string model, data, split = "test", acronym, mesh_root, out, markdown;
+  std::size_t num = 0;
+  std::uint64_t seed = 0;
+  int threads = kDefaultThreads;
+};
+
+std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
+  if (a.data.empty() == a.acronym.empty()) {
+    throw Error("evaluate: give exactly one of --data or --acronym");
+  }
+  if (!a.acronym.empty()) {
+    const data::AcronymGraspFile record = data::read_acronym_file(a.acronym);
+    data::GraspObject object;
+    object.name = fs::path(a.acronym).stem().string();
+    object.mesh = geometry::scaled(
+        geometry::read_mesh(data::find_object_mesh(a.acronym, record.object.file, a.mesh_root)),
+        record.object.scale);
+    object.grasps = record.successful_grasps();
+    if (object.grasps.empty()) throw Error(a.acronym + ": no successful grasps to compare with");
+    return {object};
+  }
+  if (!fs::is_directory(a.data)) throw Error(a.data + ": no such dataset folder");
+  const data::AcronymDataset dataset = data::AcronymDataset::open(a.data);
+  const fs::path split_file = fs::path(a.data) / "splits.json";
+  if (!fs::exists(split_file)) throw Error(split_file.string() + ": no split file");
+  std::vector<data::GraspObject> objects;
+  for (const data::ObjectEntry& entry :
+       dataset.select(data::read_split_file(split_file).part(a.split))) {
+    objects.push_back(data::AcronymDataset::load(entry));
+  }
+  if (objects.empty()) throw Error("evaluate: the " + a.split + " split is empty");
+  return objects;
+}
+
+void run_evaluate(const EvaluateArgs& a) {
+  at::set_num_threads(a.threads);
+  const train::TrainedModel trained = train::load_trained_model(a.model);
+  const std::vector<data::GraspObject> objects = evaluation_objects(a);
+  ProgressLine progress("evaluating", objects.size());
+  json per_object = json::array();
+  double total = 0;
+  std::string table = "| object | n | EMD (3 rotations) | mean |\n|---|---|---|---|\n";
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    const data::GraspObject& object = objects[i];
+    const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
+    const train::ObjectEvaluation e =
+        train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
+                               trained.config.sampling, a.seed);
+    per_object.push_back(
+        {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}});
+    table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |\n", e.name, e.n, e.emd[0],
+                         e.emd[1], e.emd[2], e.mean_emd);
+    total += e.mean_emd;
+    progress.update(i + 1);
+  }
+  progress.finish();
+  const double mean = total / static_cast<double>(objects.size());
+  const json report = {{"model", a.model},
+                       {"step", trained.step},
+                       {"sampling",
+                        {{"solver", trained.config.sampling.solver},
+                         {"steps", trained.config.sampling.steps},
+                         {"guidance", trained.config.sampling.guidance}}},
+                       {"seed", a.seed},
+                       {"objects", per_object},
+                       {"mean_emd", mean}};
+  std::cout << table << fmt::format("mean EMD over {} objects: {:.4f}\n", objects.size(), mean);
+  if (!a.out.empty()) write_text_atomically(a.out, report.dump(1) + "\n");
+  if (!a.markdown.empty()) {
+    write_text_atomically(a.markdown, fmt::format("# EMD of {} (step {})\n\n{}\nmean EMD: {:.4f}\n",
+                                                  a.model, trained.step, table, mean));
+  }
+}
+
+}  // namespace
+
+void add_model_commands(CLI::App& app) {
+  auto t = std::make_shared<TrainArgs>();
+  CLI::App* train_cmd =
+      app.add_subcommand("train", "Train the GraspECMF model on a dataset folder");
+  train_cmd->add_option("--config", t->config, "Training config (JSON, e.g. configs/cpu.json)")
+      ->required();
+  train_cmd->add_option("--data", t->data, "ACRONYM-style dataset folder")->required();
+  train_cmd->add_option("--out", t->out, "Run folder (resumed if it holds this config)")
+      ->required();
+  train_cmd->add_option("--threads", t->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  train_cmd->callback([t] { run_train(*t); });
+
+  auto s = std::make_shared<SampleArgs>();
+  CLI::App* sample_cmd = app.add_subcommand("sample", "Generate grasps for an object");
+  sample_cmd->add_option("--model", s->model, "Run folder of a trained model")->required();
+  sample_cmd->add_option("--mesh", s->mesh, "Object mesh (.obj/.stl/.ply)");
+  sample_cmd->add_option("--scale", s->scale, "Mesh units to metres")->check(CLI::PositiveNumber);
+  sample_cmd->add_option("--points", s->points, "Point cloud (.xyz/.txt/.npy/.ply), metres");
+  sample_cmd->add_option("--acronym", s->acronym, "ACRONYM grasp file naming the object");
+  sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
+  sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
+  sample_cmd->add_option("--solver", s->solver, "euler, heun or rkmk4 (default: the run's)");
+  sample_cmd->add_option("--steps", s->steps, "ODE steps")->check(CLI::Range(1, 100000));
+  sample_cmd->add_option("--guidance", s->guidance, "Classifier-free guidance weight");
+  sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
+  sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
+  sample_cmd->callback([s] { run_sample(*s); });
+
+  auto e = std::make_shared<EvaluateArgs>();
+  CLI::App* eval_cmd = app.add_subcommand("evaluate", "EMD of a trained model against real grasps");
+  eval_cmd->add_option("--model", e->model, "Run folder of a trained model")->required();
+  eval_cmd->add_option("--data", e->data, "Dataset folder with splits.json");
+  eval_cmd->add_option("--split", e->split, "train, val or test");
+  eval_cmd->add_option("--acronym", e->acronym, "A single ACRONYM grasp file instead");
+  eval_cmd->add_option("--mesh-root", e->mesh_root, "Folder the ACRONYM file's mesh is in");
+  eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
+  eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
+  eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  eval_cmd->add_option("--out", e->out, "JSON report");
+  eval_cmd->add_option("--markdown", e->markdown, "Markdown report");
+  eval_cmd->callback([e] { run_evaluate(*e); });
+}
+
+}  // namespace graspecmf::apps

@@ -1,0 +1,85 @@
+#include "graspecmf/train/checkpoint.hpp"
+
+#include <torch/serialize.h>
+
+#include "graspecmf/core/atomic_file.hpp"
+#include "graspecmf/core/error.hpp"
+
+namespace graspecmf::train {
+namespace fs = std::filesystem;
+namespace {
+
+// Parameters and buffers as (name, shape), to detect a checkpoint of another configuration
+// (LibTorch's load replaces a tensor whatever its shape, and ignores names it does not need).
+std::vector<std::pair<std::string, std::vector<int64_t>>> layout(const torch::nn::Module& model) {
+  std::vector<std::pair<std::string, std::vector<int64_t>>> result;
+  for (const auto& item : model.named_parameters())
+    result.emplace_back(item.key(), item.value().sizes().vec());
+  for (const auto& item : model.named_buffers())
+    result.emplace_back(item.key(), item.value().sizes().vec());
+  return result;
+}
+
+}  // namespace
+
+void save_checkpoint(const fs::path& path, const torch::nn::Module& model,
+                     const torch::optim::Optimizer& optimizer, const TrainingState& state) {
+  torch::serialize::OutputArchive archive, model_archive, optimizer_archive;
+  model.save(model_archive);
+  optimizer.save(optimizer_archive);
+  archive.write("model", model_archive);
+  archive.write("optimizer", optimizer_archive);
+  archive.write("step", torch::tensor({state.step}, torch::kLong));
+  archive.write("tensor_count", torch::tensor({static_cast<int64_t>(layout(model).size())}));
+  const std::string& s = state.sampler_state;
+  archive.write("sampler_state", torch::from_blob(const_cast<char*>(s.data()),
+                                                  {static_cast<int64_t>(s.size())}, torch::kUInt8)
+                                     .clone());
+  archive.write("generator", state.generator);
+  write_atomically(path, [&](const fs::path& tmp) {
+    try {
+      archive.save_to(tmp.string());
+    } catch (const c10::Error& e) {
+      throw Error(path.string() + ": cannot write checkpoint: " + e.what_without_backtrace());
+    }
+  });
+}
+
+void load_checkpoint(const fs::path& path, torch::nn::Module& model,
+                     torch::optim::Optimizer* optimizer, TrainingState* state) {
+  if (!fs::exists(path)) throw Error(path.string() + ": no such checkpoint");
+  try {
+    torch::serialize::InputArchive archive, model_archive;
+    archive.load_from(path.string());
+    archive.read("model", model_archive);
+    const auto expected = layout(model);
+    model.load(model_archive);
+    at::Tensor count;
+    archive.read("tensor_count", count);
+    if (layout(model) != expected ||
+        count.item<int64_t>() != static_cast<int64_t>(expected.size())) {
+      throw Error(path.string() + ": the checkpoint was made for a different model configuration");
+    }
+    if (optimizer != nullptr) {
+      torch::serialize::InputArchive optimizer_archive;
+      archive.read("optimizer", optimizer_archive);
+      optimizer->load(optimizer_archive);
+    }
+    if (state != nullptr) {
+      at::Tensor step, sampler;
+      archive.read("step", step);
+      archive.read("sampler_state", sampler);
+      archive.read("generator", state->generator);
+      state->step = step.item<int64_t>();
+      const auto* bytes = sampler.data_ptr<uint8_t>();
+      state->sampler_state.assign(bytes, bytes + sampler.numel());
+    }
+  } catch (const c10::Error& e) {
+    throw Error(path.string() +
+                ": checkpoint does not match this model configuration or is "
+                "damaged (" +
+                e.what_without_backtrace() + ")");
+  }
+}
+
+}  // namespace graspecmf::train

@@ -1,0 +1,28 @@
+#pragma once
+// One training checkpoint file: the model's parameters, the optimizer's state and everything else
+// a resumed run needs to continue bit for bit (step, data sampler state, flow generator state).
+
+#include <torch/nn/module.h>
+#include <torch/optim/optimizer.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace graspecmf::train {
+
+struct TrainingState {
+  std::int64_t step = 0;      // steps completed
+  std::string sampler_state;  // data::TrainingSampler::state()
+  at::Tensor generator;       // the flow generator's get_state()
+};
+
+// Writes the checkpoint atomically (a failure leaves any old file untouched).
+void save_checkpoint(const std::filesystem::path& path, const torch::nn::Module& model,
+                     const torch::optim::Optimizer& optimizer, const TrainingState& state);
+// Loads parameters into model (and, when given, the optimizer state and the training state).
+// Throws Error if the file is missing, unreadable, or made for a different configuration.
+void load_checkpoint(const std::filesystem::path& path, torch::nn::Module& model,
+                     torch::optim::Optimizer* optimizer = nullptr, TrainingState* state = nullptr);
+
+}  // namespace graspecmf::train

@@ -1,0 +1,54 @@
+#include "graspecmf/train/evaluation.hpp"
+
+#include <numeric>
+
+#include "graspecmf/core/random.hpp"
+#include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/lie/rotation_sets.hpp"
+#include "graspecmf/metrics/emd.hpp"
+#include "graspecmf/train/grasp_sampling.hpp"
+
+namespace graspecmf::train {
+
+std::vector<Eigen::Matrix3d> test_rotations() {
+  return lie::super_fibonacci_rotations(3);
+}
+
+std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
+                                        std::uint64_t seed) {
+  std::vector<std::size_t> order(object.grasps.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  Rng rng(seed);
+  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.index(i)]);
+  order.resize(std::min(n, order.size()));
+  std::vector<lie::Pose> grasps;
+  for (std::size_t i : order) grasps.push_back(object.grasps[i]);
+  return grasps;
+}
+
+ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
+                                 const TrainConfig& config,
+                                 const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
+                                 const SamplingSettings& settings, std::uint64_t seed) {
+  ObjectEvaluation result;
+  result.name = object.name;
+  const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
+  result.n = reference.size();
+  const geometry::SurfacePoints cloud = geometry::sample_surface(
+      object.mesh, static_cast<std::size_t>(config.model.encoder.points), seed + 1);
+  for (std::size_t r = 0; r < rotations.size(); ++r) {
+    const Eigen::Matrix3d& g = rotations[r];
+    std::vector<Eigen::Vector3d> rotated_cloud;
+    for (const Eigen::Vector3d& q : cloud.points) rotated_cloud.push_back(g * q);
+    std::vector<lie::Pose> rotated_reference;
+    for (const lie::Pose& x : reference) rotated_reference.push_back({g * x.R, g * x.p});
+    const std::vector<lie::Pose> generated =
+        sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r);
+    result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
+  }
+  result.mean_emd = std::accumulate(result.emd.begin(), result.emd.end(), 0.0) /
+                    static_cast<double>(result.emd.size());
+  return result;
+}
+
+}  // namespace graspecmf::train

@@ -1,0 +1,28 @@
+#pragma once
+// Drawing grasps from a trained model (METHOD.md §§1, 6): centre and scale the cloud, integrate the
+// guided flow from prior samples, and map the grasps back to the cloud's frame in metres.
+
+#include <cstdint>
+#include <vector>
+
+#include "graspecmf/flow/pose_batch.hpp"
+#include "graspecmf/lie/se3.hpp"
+#include "graspecmf/nn/grasp_flow_model.hpp"
+#include "graspecmf/train/train_config.hpp"
+
+namespace graspecmf::train {
+
+// The flow from x0 (network units, float32) for one object given as points [N, 3] in network units
+// (centred and scaled): x(1) with the settings' solver, steps and guidance. No gradients.
+flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tensor& points,
+                                 const flow::PoseBatch& x0, const SamplingSettings& settings);
+
+// n grasps for a cloud in metres (any frame, ≥ k points): centred on its centroid and scaled by
+// position_scale for the network, the prior drawn from seed; returned as T_object_gripper in the
+// cloud's frame, metres. Throws Error for an empty or non-finite cloud or n = 0.
+std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
+                                     const std::vector<Eigen::Vector3d>& cloud,
+                                     const TrainConfig& config, std::size_t n,
+                                     const SamplingSettings& settings, std::uint64_t seed);
+
+}  // namespace graspecmf::train

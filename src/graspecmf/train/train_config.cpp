@@ -1,0 +1,176 @@
+#include "graspecmf/train/train_config.hpp"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/flow/sampler.hpp"
+
+namespace graspecmf::train {
+using nlohmann::json;
+namespace {
+
+// Reads json[key] into value when present; a wrong type is an Error naming the key.
+template <typename T>
+void read(const json& j, const char* key, T& value, const std::string& section) {
+  if (!j.contains(key)) return;
+  try {
+    value = j.at(key).get<T>();
+  } catch (const json::exception&) {
+    throw Error("train config: " + section + key + " has the wrong type");
+  }
+}
+
+// Throws Error if j has a key outside `known`.
+void only(const json& j, std::initializer_list<const char*> known, const std::string& section) {
+  if (!j.is_object()) throw Error("train config: " + section + " must be an object");
+  for (const auto& [key, value] : j.items()) {
+    if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
+      throw Error("train config: unknown setting " + section + key);
+    }
+  }
+}
+
+}  // namespace
+
+void validate(const TrainConfig& c) {
+  const auto positive_widths = [](const std::vector<int64_t>& widths) {
+    return !widths.empty() &&
+           std::all_of(widths.begin(), widths.end(), [](int64_t w) { return w > 0; });
+  };
+  const nn::EncoderOptions& e = c.model.encoder;
+  if (!positive_widths(e.widths)) throw Error("train config: encoder widths must be positive");
+  if (e.k < 1 || e.out_channels < 1 || e.points < e.k) {
+    throw Error("train config: need k ≥ 1, out_channels ≥ 1 and points ≥ k");
+  }
+  if (!positive_widths(c.model.field.hidden_widths)) {
+    throw Error("train config: field hidden_widths must be positive");
+  }
+  if (c.data.objects_per_step < 1) throw Error("train config: objects_per_step must be ≥ 1");
+  if (!(c.data.position_scale > 0)) throw Error("train config: position_scale must be > 0");
+  if (c.steps < 1) throw Error("train config: steps must be ≥ 1");
+  if (!(c.learning_rate > 0) || !(c.weight_decay >= 0)) {
+    throw Error("train config: learning_rate must be > 0 and weight_decay ≥ 0");
+  }
+  if (!(c.cfg_drop >= 0 && c.cfg_drop <= 1))
+    throw Error("train config: cfg_drop must be in [0, 1]");
+  if (!(c.prior_position_std > 0)) throw Error("train config: prior_position_std must be > 0");
+  if (c.log_every < 1 || c.checkpoint_every < 1 || c.validate_every < 0) {
+    throw Error("train config: log_every and checkpoint_every must be ≥ 1, validate_every ≥ 0");
+  }
+  if (c.validation_grasps < 1) throw Error("train config: validation_grasps must be ≥ 1");
+  flow::parse_solver(c.sampling.solver);
+  if (c.sampling.steps < 1) throw Error("train config: sampling steps must be ≥ 1");
+  if (!std::isfinite(c.sampling.guidance)) throw Error("train config: guidance must be finite");
+}
+
+json to_json(const TrainConfig& c) {
+  const nn::EncoderOptions& e = c.model.encoder;
+  return {{"model",
+           {{"encoder",
+             {{"widths", e.widths},
+              {"k", e.k},
+              {"out_channels", e.out_channels},
+              {"points", e.points},
+              {"slope", e.slope}}},
+            {"field",
+             {{"hidden_widths", c.model.field.hidden_widths}, {"slope", c.model.field.slope}}}}},
+          {"data",
+           {{"objects_per_step", c.data.objects_per_step},
+            {"grasps_per_object", c.data.grasps_per_object},
+            {"position_scale", c.data.position_scale},
+            {"augmentation", data::to_string(c.data.augmentation)}}},
+          {"steps", c.steps},
+          {"learning_rate", c.learning_rate},
+          {"weight_decay", c.weight_decay},
+          {"cfg_drop", c.cfg_drop},
+          {"prior_position_std", c.prior_position_std},
+          {"seed", c.seed},
+          {"log_every", c.log_every},
+          {"checkpoint_every", c.checkpoint_every},
+          {"validate_every", c.validate_every},
+          {"validation_grasps", c.validation_grasps},
+          {"validation_objects", c.validation_objects},
+          {"sampling",
+           {{"solver", c.sampling.solver},
+            {"steps", c.sampling.steps},
+            {"guidance", c.sampling.guidance}}}};
+}
+
+TrainConfig train_config_from_json(const json& j) {
+  TrainConfig c;
+  only(j,
+       {"model", "data", "steps", "learning_rate", "weight_decay", "cfg_drop", "prior_position_std",
+        "seed", "log_every", "checkpoint_every", "validate_every", "validation_grasps",
+        "validation_objects", "sampling"},
+       "");
+  if (j.contains("model")) {
+    const json& m = j["model"];
+    only(m, {"encoder", "field"}, "model.");
+    if (m.contains("encoder")) {
+      const json& e = m["encoder"];
+      only(e, {"widths", "k", "out_channels", "points", "slope"}, "model.encoder.");
+      read(e, "widths", c.model.encoder.widths, "model.encoder.");
+      read(e, "k", c.model.encoder.k, "model.encoder.");
+      read(e, "out_channels", c.model.encoder.out_channels, "model.encoder.");
+      read(e, "points", c.model.encoder.points, "model.encoder.");
+      read(e, "slope", c.model.encoder.slope, "model.encoder.");
+    }
+    if (m.contains("field")) {
+      const json& f = m["field"];
+      only(f, {"hidden_widths", "slope"}, "model.field.");
+      read(f, "hidden_widths", c.model.field.hidden_widths, "model.field.");
+      read(f, "slope", c.model.field.slope, "model.field.");
+    }
+  }
+  if (j.contains("data")) {
+    const json& d = j["data"];
+    only(d, {"objects_per_step", "grasps_per_object", "position_scale", "augmentation"}, "data.");
+    read(d, "objects_per_step", c.data.objects_per_step, "data.");
+    read(d, "grasps_per_object", c.data.grasps_per_object, "data.");
+    read(d, "position_scale", c.data.position_scale, "data.");
+    std::string augmentation = data::to_string(c.data.augmentation);
+    read(d, "augmentation", augmentation, "data.");
+    c.data.augmentation = data::parse_augmentation(augmentation);
+  }
+  read(j, "steps", c.steps, "");
+  read(j, "learning_rate", c.learning_rate, "");
+  read(j, "weight_decay", c.weight_decay, "");
+  read(j, "cfg_drop", c.cfg_drop, "");
+  read(j, "prior_position_std", c.prior_position_std, "");
+  read(j, "seed", c.seed, "");
+  read(j, "log_every", c.log_every, "");
+  read(j, "checkpoint_every", c.checkpoint_every, "");
+  read(j, "validate_every", c.validate_every, "");
+  read(j, "validation_grasps", c.validation_grasps, "");
+  read(j, "validation_objects", c.validation_objects, "");
+  if (j.contains("sampling")) {
+    const json& s = j["sampling"];
+    only(s, {"solver", "steps", "guidance"}, "sampling.");
+    read(s, "solver", c.sampling.solver, "sampling.");
+    read(s, "steps", c.sampling.steps, "sampling.");
+    read(s, "guidance", c.sampling.guidance, "sampling.");
+  }
+  c.model.field.z_channels = c.model.encoder.out_channels;
+  c.data.points = static_cast<std::size_t>(c.model.encoder.points);
+  validate(c);
+  return c;
+}
+
+TrainConfig read_train_config(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw Error(path.string() + ": cannot open training config");
+  json j;
+  try {
+    j = json::parse(in);
+  } catch (const json::exception& e) {
+    throw Error(path.string() + ": not valid JSON (" + e.what() + ")");
+  }
+  try {
+    return train_config_from_json(j);
+  } catch (const Error& e) {
+    throw Error(path.string() + ": " + e.what());
+  }
+}
+
+}  // namespace graspecmf::train

@@ -1,0 +1,47 @@
+#pragma once
+// Every setting of a training run (METHOD.md §§3–5, §8), read from and written to JSON; the run
+// folder keeps a copy, and a resumed run must use the same one.
+
+#include <cstdint>
+#include <filesystem>
+#include <nlohmann/json_fwd.hpp>
+#include <string>
+
+#include "graspecmf/data/training_sampler.hpp"
+#include "graspecmf/nn/grasp_flow_model.hpp"
+
+namespace graspecmf::train {
+
+// How grasps are drawn from a trained model (also the validation EMD's settings).
+struct SamplingSettings {
+  std::string solver = "rkmk4";  // euler, heun or rkmk4
+  int steps = 20;
+  double guidance = 2.0;  // classifier-free guidance weight w
+};
+
+struct TrainConfig {
+  nn::GraspFlowModelOptions model;    // field.z_channels follows encoder.out_channels
+  data::TrainingSamplerOptions data;  // points follows model.encoder.points
+  std::int64_t steps = 100000;
+  double learning_rate = 1e-4;  // Adam
+  double weight_decay = 1e-6;
+  double cfg_drop = 0.2;            // probability of the null condition per grasp
+  double prior_position_std = 1.0;  // in network units (× 1 / position_scale metres)
+  std::uint64_t seed = 0;
+  std::int64_t log_every = 10;
+  std::int64_t checkpoint_every = 500;
+  std::int64_t validate_every = 1000;   // 0: never
+  std::size_t validation_grasps = 100;  // generated and reference grasps per object for EMD
+  std::size_t validation_objects = 10;  // at most this many validation objects
+  SamplingSettings sampling;
+};
+
+// Throws Error naming the first setting out of range.
+void validate(const TrainConfig& config);
+nlohmann::json to_json(const TrainConfig& config);
+// Missing keys keep their defaults; an unknown key or a wrong type is an Error.
+TrainConfig train_config_from_json(const nlohmann::json& json);
+// Reads a JSON config file; throws Error naming the file.
+TrainConfig read_train_config(const std::filesystem::path& path);
+
+}  // namespace graspecmf::train

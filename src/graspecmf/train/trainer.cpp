@@ -1,0 +1,235 @@
+#include "graspecmf/train/trainer.hpp"
+
+#include <torch/torch.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "graspecmf/core/atomic_file.hpp"
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/data/splits.hpp"
+#include "graspecmf/data/training_sampler.hpp"
+#include "graspecmf/flow/loss.hpp"
+#include "graspecmf/flow/path.hpp"
+#include "graspecmf/flow/prior.hpp"
+#include "graspecmf/train/checkpoint.hpp"
+#include "graspecmf/train/evaluation.hpp"
+
+namespace graspecmf::train {
+namespace fs = std::filesystem;
+using nlohmann::json;
+namespace {
+
+constexpr const char* kConfigFile = "config.json";
+constexpr const char* kCheckpointFile = "checkpoint.pt";
+constexpr const char* kLogFile = "log.jsonl";
+constexpr std::uint64_t kValidationSeed = 12345;
+
+// The dataset's splits: splits.json beside grasps/ when present, else a seeded 80/10/10 split.
+data::DatasetSplit dataset_split(const data::AcronymDataset& dataset, const fs::path& data_dir,
+                                 std::uint64_t seed) {
+  const fs::path file = data_dir / "splits.json";
+  if (fs::exists(file)) return data::read_split_file(file);
+  return data::random_split(dataset.names(), {0.1, 0.1}, seed);
+}
+
+std::vector<data::GraspObject> load_objects(const data::AcronymDataset& dataset,
+                                            const std::vector<std::string>& names,
+                                            std::size_t limit) {
+  std::vector<data::GraspObject> objects;
+  for (const data::ObjectEntry& entry : dataset.select(names)) {
+    if (objects.size() == limit) break;
+    objects.push_back(data::AcronymDataset::load(entry));
+  }
+  return objects;
+}
+
+// One step's tensors: the clouds [O, N, 3] and the grasps with their object indices.
+struct StepTensors {
+  at::Tensor points, object_index;
+  flow::PoseBatch grasps;
+};
+
+StepTensors to_tensors(const std::vector<data::ObjectSample>& samples) {
+  const auto copy = [](const std::vector<float>& values, std::vector<int64_t> shape) {
+    return torch::from_blob(const_cast<float*>(values.data()), shape, torch::kFloat).clone();
+  };
+  std::vector<at::Tensor> points, rotations, positions, index;
+  for (std::size_t o = 0; o < samples.size(); ++o) {
+    const data::ObjectSample& s = samples[o];
+    const auto n = static_cast<int64_t>(s.points.size() / 3);
+    const auto g = static_cast<int64_t>(s.positions.size() / 3);
+    points.push_back(copy(s.points, {n, 3}));
+    rotations.push_back(copy(s.rotations, {g, 3, 3}));
+    positions.push_back(copy(s.positions, {g, 3}));
+    index.push_back(torch::full({g}, static_cast<int64_t>(o), torch::kLong));
+  }
+  return {torch::stack(points), torch::cat(index), {torch::cat(rotations), torch::cat(positions)}};
+}
+
+// The flow-matching loss of one batch (METHOD.md §5), differentiable in the model's parameters.
+at::Tensor batch_loss(const nn::GraspFlowModel& model, const StepTensors& batch,
+                      const TrainConfig& config, at::Generator& generator) {
+  const int64_t g = batch.grasps.R.size(0);
+  const nn::ObjectCondition condition = model->condition(batch.points);
+  const flow::PoseBatch x0 = flow::sample_prior(g, config.prior_position_std, generator);
+  const at::Tensor t = at::rand({g}, generator, torch::kFloat);
+  const flow::PathPoint path = flow::geodesic_path(x0, batch.grasps, t);
+  const at::Tensor keep = flow::cfg_keep_mask(g, config.cfg_drop, generator);
+  const nn::Velocity velocity =
+      model->forward(condition, batch.object_index, path.x_t.R, path.x_t.p, t, keep);
+  return flow::flow_matching_loss(velocity.omega, velocity.v, path.omega, path.v);
+}
+
+// Validation: the loss on a fixed batch of the validation objects and their mean EMD.
+json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspObject>& objects,
+                       const TrainConfig& config, std::int64_t step) {
+  json record = {{"step", step}};
+  if (objects.empty()) return record;
+  model->eval();
+  {
+    torch::NoGradGuard no_grad;
+    data::TrainingSamplerOptions options = config.data;
+    options.objects_per_step = objects.size();
+    data::TrainingSampler sampler(objects, options, kValidationSeed);
+    at::Generator generator = flow::make_generator(kValidationSeed);
+    record["val_loss"] =
+        batch_loss(model, to_tensors(sampler.next_step()), config, generator).item<double>();
+  }
+  double total = 0;
+  for (const data::GraspObject& object : objects) {
+    total += evaluate_object(model, object, config, {test_rotations()[0]}, config.validation_grasps,
+                             config.sampling, kValidationSeed)
+                 .mean_emd;
+  }
+  record["val_emd"] = total / static_cast<double>(objects.size());
+  model->train();
+  return record;
+}
+
+void append_line(const fs::path& path, const json& record) {
+  std::ofstream(path, std::ios::app) << record.dump() << "\n";
+}
+
+// Drops log records past the checkpoint (written by a run killed after its last checkpoint).
+void truncate_log(const fs::path& path, std::int64_t step) {
+  if (!fs::exists(path)) return;
+  std::ifstream in(path);
+  std::string line, kept;
+  while (std::getline(in, line)) {
+    const json record = json::parse(line, nullptr, false);
+    if (record.is_object() && record.value("step", std::int64_t{0}) <= step) kept += line + "\n";
+  }
+  write_text_atomically(path, kept);
+}
+
+// Creates the run folder, or checks that it holds this configuration.
+void prepare_run(const fs::path& run_dir, const TrainConfig& config) {
+  std::error_code ec;
+  fs::create_directories(run_dir, ec);
+  if (ec) throw Error(run_dir.string() + ": cannot create the run folder (" + ec.message() + ")");
+  const fs::path file = run_dir / kConfigFile;
+  if (fs::exists(file)) {
+    if (to_json(read_train_config(file)) != to_json(config)) {
+      throw Error(run_dir.string() +
+                  " holds a run with another configuration; choose another --out or remove it");
+    }
+    return;
+  }
+  write_text_atomically(file, to_json(config).dump(2) + "\n");
+}
+
+}  // namespace
+
+TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs::path& run_dir,
+                  int threads, const TrainCallbacks& callbacks) {
+  validate(config);
+  if (threads < 1) throw Error("train: threads must be ≥ 1");
+  at::set_num_threads(threads);
+  if (!fs::is_directory(data_dir)) throw Error(data_dir.string() + ": no such dataset folder");
+  const data::AcronymDataset dataset = data::AcronymDataset::open(data_dir);
+  const data::DatasetSplit split = dataset_split(dataset, data_dir, config.seed);
+  if (split.train.empty()) throw Error(data_dir.string() + ": the train split is empty");
+  prepare_run(run_dir, config);
+
+  torch::manual_seed(config.seed);
+  nn::GraspFlowModel model(config.model);
+  torch::optim::Adam optimizer(
+      model->parameters(),
+      torch::optim::AdamOptions(config.learning_rate).weight_decay(config.weight_decay));
+  data::TrainingSampler sampler(load_objects(dataset, split.train, split.train.size()), config.data,
+                                config.seed);
+  const std::vector<data::GraspObject> validation =
+      load_objects(dataset, split.val, config.validation_objects);
+  at::Generator generator = flow::make_generator(config.seed + 1);
+
+  TrainResult result;
+  const fs::path checkpoint = run_dir / kCheckpointFile;
+  if (fs::exists(checkpoint)) {
+    TrainingState state;
+    load_checkpoint(checkpoint, *model, &optimizer, &state);
+    sampler.restore(state.sampler_state);
+    generator.set_state(state.generator);
+    result.resumed_from = state.step;
+    truncate_log(run_dir / kLogFile, state.step);
+  }
+  const auto save = [&](std::int64_t step) {
+    save_checkpoint(checkpoint, *model, optimizer, {step, sampler.state(), generator.get_state()});
+  };
+
+  model->train();
+  const auto start = std::chrono::steady_clock::now();
+  auto interval_start = start;
+  double interval_loss = 0;
+  std::int64_t interval_steps = 0;
+  for (std::int64_t step = result.resumed_from + 1; step <= config.steps; ++step) {
+    const at::Tensor loss = batch_loss(model, to_tensors(sampler.next_step()), config, generator);
+    optimizer.zero_grad();
+    loss.backward();
+    optimizer.step();
+    interval_loss += loss.item<double>();
+    ++interval_steps;
+    if (step % config.log_every == 0 || step == config.steps) {
+      const auto now = std::chrono::steady_clock::now();
+      const json record = {
+          {"step", step},
+          {"loss", interval_loss / static_cast<double>(interval_steps)},
+          {"seconds_per_step",
+           std::chrono::duration<double>(now - interval_start).count() / interval_steps},
+          {"threads", threads}};
+      append_line(run_dir / kLogFile, record);
+      if (callbacks.record) callbacks.record(record);
+      interval_start = now;
+      interval_loss = 0;
+      interval_steps = 0;
+    }
+    if ((config.validate_every > 0 && step % config.validate_every == 0) || step == config.steps) {
+      const json record = validation_record(model, validation, config, step);
+      append_line(run_dir / kLogFile, record);
+      if (callbacks.record) callbacks.record(record);
+    }
+    if (step % config.checkpoint_every == 0 || step == config.steps) save(step);
+    if (callbacks.step) callbacks.step(step, config.steps);
+  }
+  result.steps = config.steps;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+TrainedModel load_trained_model(const fs::path& run_dir) {
+  const fs::path config_file = run_dir / kConfigFile;
+  if (!fs::exists(config_file))
+    throw Error(run_dir.string() + ": not a training run (no config.json)");
+  TrainedModel trained;
+  trained.config = read_train_config(config_file);
+  trained.model = nn::GraspFlowModel(trained.config.model);
+  TrainingState state;
+  load_checkpoint(run_dir / kCheckpointFile, *trained.model, nullptr, &state);
+  trained.step = state.step;
+  trained.model->eval();
+  return trained;
+}
+
+}  // namespace graspecmf::train

@@ -1,0 +1,44 @@
+#pragma once
+// `graspecmf train`: flow-matching training of the GraspECMF model on an ACRONYM-style dataset
+// folder (METHOD.md §5), in a run folder that holds config.json, checkpoint.pt and log.jsonl.
+// Interrupted runs (even kill -9) resume from the last checkpoint and continue bit for bit.
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <nlohmann/json_fwd.hpp>
+
+#include "graspecmf/train/train_config.hpp"
+
+namespace graspecmf::train {
+
+struct TrainCallbacks {
+  std::function<void(std::int64_t step, std::int64_t total)> step;  // after every step
+  std::function<void(const nlohmann::json& record)> record;         // each log.jsonl record
+};
+
+struct TrainResult {
+  std::int64_t resumed_from = 0;  // the checkpoint's step, 0 for a fresh run
+  std::int64_t steps = 0;         // steps completed in total
+  double seconds = 0.0;           // wall time of this invocation
+};
+
+// Trains on the dataset's train split (splits.json beside grasps/, else a seeded 80/10/10 split),
+// validating on its val split. `threads` sets LibTorch's intra-op threads; results are
+// reproducible for a given thread count. Throws Error for a missing or unusable dataset, a run
+// folder made with another configuration, or an unwritable run folder.
+TrainResult train(const TrainConfig& config, const std::filesystem::path& data_dir,
+                  const std::filesystem::path& run_dir, int threads,
+                  const TrainCallbacks& callbacks = {});
+
+struct TrainedModel {
+  TrainConfig config;
+  nn::GraspFlowModel model{nullptr};  // in eval mode
+  std::int64_t step = 0;
+};
+
+// The run folder's configuration and latest checkpoint. Throws Error if either is missing, or the
+// checkpoint does not fit the configuration.
+TrainedModel load_trained_model(const std::filesystem::path& run_dir);
+
+}  // namespace graspecmf::train

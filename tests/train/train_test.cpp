@@ -1,0 +1,232 @@
+#include <gtest/gtest.h>
+#include <torch/torch.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "../geometry/test_meshes.hpp"
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/flow/prior.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/lie/rotation_sets.hpp"
+#include "graspecmf/train/checkpoint.hpp"
+#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/train/trainer.hpp"
+#include "test_support.hpp"
+
+namespace graspecmf::train {
+namespace {
+
+namespace fs = std::filesystem;
+using graspecmf::testing::read_file;
+using graspecmf::testing::ScratchDir;
+
+class OneThread : public ::testing::Environment {
+ public:
+  void SetUp() override { at::set_num_threads(1); }
+};
+const auto* const kOneThread = ::testing::AddGlobalTestEnvironment(new OneThread);
+
+// A model small enough to train for a few steps in a test.
+TrainConfig tiny_config() {
+  TrainConfig c;
+  c.model.encoder.widths = {4, 4, 4, 4, 4};
+  c.model.encoder.k = 4;
+  c.model.encoder.out_channels = 6;
+  c.model.encoder.points = 32;
+  c.model.field.z_channels = 6;
+  c.model.field.hidden_widths = {8, 8};
+  c.data.points = 32;
+  c.data.objects_per_step = 2;
+  c.data.grasps_per_object = 8;
+  c.steps = 6;
+  c.log_every = 1;
+  c.checkpoint_every = 3;
+  c.validate_every = 0;
+  c.validation_grasps = 4;
+  c.validation_objects = 1;
+  c.sampling.steps = 2;
+  return c;
+}
+
+// A dataset folder of three boxes with 120 "successful" grasps each (the loader's threshold is
+// 100), split 2 train / 1 val.
+fs::path tiny_dataset(const ScratchDir& dir) {
+  const fs::path root = dir / "data";
+  fs::create_directories(root / "grasps");
+  fs::create_directories(root / "meshes/Box");
+  Rng rng(3);
+  nlohmann::json split = {{"train", nlohmann::json::array()},
+                          {"val", nlohmann::json::array()},
+                          {"test", nlohmann::json::array()}};
+  for (int i = 0; i < 3; ++i) {
+    const double size = 0.04 + 0.01 * i;
+    geometry::write_mesh(
+        geometry::testing::make_box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(size)),
+        root / ("meshes/Box/b" + std::to_string(i) + ".obj"));
+    data::AcronymGraspFile record;
+    record.object.file = "meshes/Box/b" + std::to_string(i) + ".obj";
+    data::GraspQualities q;
+    for (int g = 0; g < 120; ++g) {
+      lie::Pose pose;
+      pose.R = lie::random_rotation(rng);
+      pose.p = Eigen::Vector3d(rng.uniform(), rng.uniform(), rng.uniform()) * size;
+      record.transforms.push_back(pose.matrix());
+      q.object_in_gripper.push_back(1);
+    }
+    q.motion_closing_linear = q.motion_closing_angular = q.motion_shaking_linear =
+        q.motion_shaking_angular = std::vector<double>(120, 0.0);
+    record.qualities = q;
+    const std::string name = "Box_b" + std::to_string(i) + "_1";
+    data::write_acronym_file(record, root / "grasps" / (name + ".h5"));
+    split[i < 2 ? "train" : "val"].push_back(name);
+  }
+  std::ofstream(root / "splits.json") << split.dump();
+  return root;
+}
+
+TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
+  for (const char* name : {"paper.json", "cpu.json"}) {
+    const fs::path file = fs::path(GRASPECMF_DATA_DIR) / ".." / "configs" / name;
+    const TrainConfig c = read_train_config(file);
+    EXPECT_EQ(to_json(train_config_from_json(to_json(c))), to_json(c)) << name;
+    EXPECT_EQ(c.model.field.z_channels, c.model.encoder.out_channels);
+  }
+  const TrainConfig paper =
+      read_train_config(fs::path(GRASPECMF_DATA_DIR) / "../configs/paper.json");
+  EXPECT_EQ(paper.model.encoder.out_channels, 341);
+  EXPECT_EQ(paper.model.encoder.k, 40);
+}
+
+TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
+  EXPECT_THROW(train_config_from_json({{"stepz", 3}}), Error);
+  EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"k", "forty"}}}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"cfg_drop", 1.5}}), Error);
+  EXPECT_THROW(train_config_from_json({{"sampling", {{"solver", "rk45"}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"data", {{"augmentation", "xyz"}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"points", 8}, {"k", 16}}}}}}),
+               Error);
+}
+
+TEST(Sampling, EndToEndSamplingIsEquivariant) {
+  torch::manual_seed(1);
+  const TrainConfig config = tiny_config();
+  const nn::GraspFlowModel model(config.model);
+  const at::Tensor points = torch::randn({32, 3});
+  at::Generator generator = flow::make_generator(2);
+  const flow::PoseBatch x0 = flow::sample_prior(16, 1.0, generator);
+  const Eigen::Matrix3d g = lie::random_rotations(1, 5)[0];
+  const at::Tensor G = torch::from_blob(const_cast<double*>(Eigen::Matrix3d(g.transpose()).data()),
+                                        {3, 3}, torch::kDouble)
+                           .to(torch::kFloat);  // row-major g
+  for (const char* solver : {"euler", "rkmk4"}) {
+    SamplingSettings settings;
+    settings.solver = solver;
+    settings.steps = 5;
+    const flow::PoseBatch x = integrate_grasps(model, points, x0, settings);
+    const flow::PoseBatch gx = integrate_grasps(
+        model, points.matmul(G.t()), {torch::matmul(G, x0.R), x0.p.matmul(G.t())}, settings);
+    const double scale = x.R.norm().item<double>() + x.p.norm().item<double>();
+    const double error = (gx.R - torch::matmul(G, x.R)).norm().item<double>() +
+                         (gx.p - x.p.matmul(G.t())).norm().item<double>();
+    EXPECT_LT(error / scale, 1e-4) << solver;
+  }
+}
+
+TEST(Sampling, GraspsFollowTheCloudsPosition) {
+  torch::manual_seed(1);
+  const TrainConfig config = tiny_config();
+  const nn::GraspFlowModel model(config.model);
+  std::vector<Eigen::Vector3d> cloud;
+  Rng rng(4);
+  for (int i = 0; i < 40; ++i) cloud.emplace_back(rng.normal(), rng.normal(), rng.normal());
+  std::vector<Eigen::Vector3d> shifted = cloud;
+  for (Eigen::Vector3d& q : shifted) q += Eigen::Vector3d(0.3, -0.2, 1.0);
+  const auto a = sample_grasps(model, cloud, config, 5, config.sampling, 9);
+  const auto b = sample_grasps(model, shifted, config, 5, config.sampling, 9);
+  for (std::size_t i = 0; i < 5; ++i) {
+    EXPECT_LT((b[i].p - a[i].p - Eigen::Vector3d(0.3, -0.2, 1.0)).norm(), 1e-5);
+    EXPECT_LT((b[i].R - a[i].R).norm(), 1e-5);
+    EXPECT_LT((a[i].R.transpose() * a[i].R - Eigen::Matrix3d::Identity()).norm(), 1e-5);
+  }
+  EXPECT_THROW(sample_grasps(model, {}, config, 5, config.sampling, 9), Error);
+  cloud[3].x() = std::nan("");
+  EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9), Error);
+}
+
+// The model parameters of a run's checkpoint, flattened.
+at::Tensor run_parameters(const fs::path& run) {
+  const TrainedModel trained = load_trained_model(run);
+  std::vector<at::Tensor> flat;
+  for (const at::Tensor& p : trained.model->parameters()) flat.push_back(p.flatten());
+  return torch::cat(flat);
+}
+
+TEST(Trainer, InterruptedRunResumesBitForBit) {
+  const ScratchDir dir;
+  const fs::path data = tiny_dataset(dir);
+  const TrainConfig config = tiny_config();
+  train(config, data, dir / "whole", 1);
+  TrainCallbacks stop;
+  stop.step = [](std::int64_t step, std::int64_t) {
+    if (step == 4) throw std::runtime_error("killed");  // after the step-3 checkpoint
+  };
+  EXPECT_THROW(train(config, data, dir / "resumed", 1, stop), std::runtime_error);
+  const TrainResult resumed = train(config, data, dir / "resumed", 1);
+  EXPECT_EQ(resumed.resumed_from, 3);
+  EXPECT_TRUE(torch::equal(run_parameters(dir / "whole"), run_parameters(dir / "resumed")));
+  EXPECT_EQ(read_file(dir / "whole/log.jsonl").size() > 0, true);
+  // The logs agree line for line on the losses (timings differ).
+  const auto losses = [](const std::string& text) {
+    std::vector<double> out;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) {
+      const auto record = nlohmann::json::parse(line);
+      if (record.contains("loss")) out.push_back(record["loss"]);
+    }
+    return out;
+  };
+  EXPECT_EQ(losses(read_file(dir / "whole/log.jsonl")),
+            losses(read_file(dir / "resumed/log.jsonl")));
+  EXPECT_EQ(losses(read_file(dir / "whole/log.jsonl")).size(), 6u);
+}
+
+TEST(Trainer, ValidationReportsLossAndEmd) {
+  const ScratchDir dir;
+  TrainConfig config = tiny_config();
+  config.steps = 2;
+  config.validate_every = 2;
+  std::vector<nlohmann::json> records;
+  TrainCallbacks callbacks;
+  callbacks.record = [&](const nlohmann::json& r) { records.push_back(r); };
+  train(config, tiny_dataset(dir), dir / "run", 1, callbacks);
+  ASSERT_FALSE(records.empty());
+  const nlohmann::json& last = records.back();
+  ASSERT_TRUE(last.contains("val_emd")) << last.dump();
+  EXPECT_GT(last["val_emd"].get<double>(), 0.0);
+  EXPECT_TRUE(std::isfinite(last["val_loss"].get<double>()));
+}
+
+TEST(Trainer, BadInputIsOneClearError) {
+  const ScratchDir dir;
+  const TrainConfig config = tiny_config();
+  EXPECT_THROW(train(config, dir / "missing", dir / "run", 1), Error);
+  const fs::path data = tiny_dataset(dir);
+  train(config, data, dir / "run", 1);
+  TrainConfig other = config;
+  other.learning_rate = 1e-3;
+  EXPECT_THROW(train(other, data, dir / "run", 1), Error);  // another configuration
+  EXPECT_THROW(load_trained_model(dir / "missing"), Error);
+  // A checkpoint from a different model configuration.
+  fs::create_directories(dir / "mismatch");
+  TrainConfig wider = config;
+  wider.model.field.hidden_widths = {16, 8};
+  std::ofstream(dir / "mismatch/config.json") << to_json(wider).dump();
+  fs::copy_file(dir / "run/checkpoint.pt", dir / "mismatch/checkpoint.pt");
+  EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
+}
+
+}  // namespace
+}  // namespace graspecmf::train
