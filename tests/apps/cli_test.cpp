@@ -10,41 +10,20 @@
 #include <sstream>
 #include <string>
 
+#include "cli_support.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/hdf5_file.hpp"
 #include "test_support.hpp"
 
 namespace {
 namespace fs = std::filesystem;
+using graspecmf::testing::CliRun;
+using graspecmf::testing::expect_one_error_line;
 using graspecmf::testing::read_file;
+using graspecmf::testing::run;
 using graspecmf::testing::sample_grasp_file;
 using graspecmf::testing::sample_mesh_file;
 using graspecmf::testing::ScratchDir;
-
-struct CliRun {
-  int exit_code;
-  std::string out;  // stdout
-  std::string err;  // stderr
-};
-
-CliRun run(const std::string& args, const ScratchDir& dir) {
-  const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command =
-      std::string(GRASPECMF_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(command.c_str());
-  CliRun result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_file(out), read_file(err)};
-  fs::remove(out);
-  fs::remove(err);
-  return result;
-}
-
-// A failed run prints exactly one line on stderr, starting with "error:".
-void expect_one_error_line(const CliRun& r, const std::string& fragment) {
-  EXPECT_NE(r.exit_code, 0);
-  EXPECT_EQ(r.err.rfind("error: ", 0), 0u) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_NE(r.err.find(fragment), std::string::npos) << r.err;
-}
 
 TEST(Cli, VersionAndHelp) {
   ScratchDir dir;

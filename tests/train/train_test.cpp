@@ -14,6 +14,7 @@
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
 #include "test_support.hpp"
+#include "tiny_dataset.hpp"
 
 namespace graspecmf::train {
 namespace {
@@ -21,6 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using graspecmf::testing::read_file;
 using graspecmf::testing::ScratchDir;
+using graspecmf::testing::tiny_dataset;
 
 class OneThread : public ::testing::Environment {
  public:
@@ -48,42 +50,6 @@ TrainConfig tiny_config() {
   c.validation_objects = 1;
   c.sampling.steps = 2;
   return c;
-}
-
-// A dataset folder of three boxes with 120 "successful" grasps each (the loader's threshold is
-// 100), split 2 train / 1 val.
-fs::path tiny_dataset(const ScratchDir& dir) {
-  const fs::path root = dir / "data";
-  fs::create_directories(root / "grasps");
-  fs::create_directories(root / "meshes/Box");
-  Rng rng(3);
-  nlohmann::json split = {{"train", nlohmann::json::array()},
-                          {"val", nlohmann::json::array()},
-                          {"test", nlohmann::json::array()}};
-  for (int i = 0; i < 3; ++i) {
-    const double size = 0.04 + 0.01 * i;
-    geometry::write_mesh(
-        geometry::testing::make_box(Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(size)),
-        root / ("meshes/Box/b" + std::to_string(i) + ".obj"));
-    data::AcronymGraspFile record;
-    record.object.file = "meshes/Box/b" + std::to_string(i) + ".obj";
-    data::GraspQualities q;
-    for (int g = 0; g < 120; ++g) {
-      lie::Pose pose;
-      pose.R = lie::random_rotation(rng);
-      pose.p = Eigen::Vector3d(rng.uniform(), rng.uniform(), rng.uniform()) * size;
-      record.transforms.push_back(pose.matrix());
-      q.object_in_gripper.push_back(1);
-    }
-    q.motion_closing_linear = q.motion_closing_angular = q.motion_shaking_linear =
-        q.motion_shaking_angular = std::vector<double>(120, 0.0);
-    record.qualities = q;
-    const std::string name = "Box_b" + std::to_string(i) + "_1";
-    data::write_acronym_file(record, root / "grasps" / (name + ".h5"));
-    split[i < 2 ? "train" : "val"].push_back(name);
-  }
-  std::ofstream(root / "splits.json") << split.dump();
-  return root;
 }
 
 TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {

@@ -1,0 +1,98 @@
+// End-to-end tests of graspecmf train / sample / evaluate on a tiny model and dataset.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "../train/tiny_dataset.hpp"
+#include "cli_support.hpp"
+#include "graspecmf/data/acronym_file.hpp"
+
+namespace {
+namespace fs = std::filesystem;
+using graspecmf::testing::expect_one_error_line;
+using graspecmf::testing::run;
+using graspecmf::testing::ScratchDir;
+using graspecmf::testing::write_file;
+
+// A model small enough to train in a second.
+constexpr const char* kTinyConfig = R"({
+  "model": {"encoder": {"widths": [4, 4, 4, 4, 4], "k": 4, "out_channels": 6, "points": 32},
+            "field": {"hidden_widths": [8, 8]}},
+  "data": {"objects_per_step": 2, "grasps_per_object": 8},
+  "steps": 4, "log_every": 2, "checkpoint_every": 2, "validate_every": 0,
+  "validation_grasps": 4, "sampling": {"steps": 2}
+})";
+
+TEST(CliModel, TrainSampleEvaluate) {
+  ScratchDir dir;
+  const fs::path data = graspecmf::testing::tiny_dataset(dir);
+  write_file(dir / "tiny.json", kTinyConfig);
+  const std::string run_dir = (dir / "run").string();
+  const auto trained = run("train --config " + (dir / "tiny.json").string() + " --data " +
+                               data.string() + " --out " + run_dir,
+                           dir);
+  ASSERT_EQ(trained.exit_code, 0) << trained.err;
+  EXPECT_NE(trained.out.find("4 steps done"), std::string::npos) << trained.out;
+  EXPECT_TRUE(fs::exists(dir / "run/checkpoint.pt"));
+
+  const std::string out = (dir / "grasps.h5").string();
+  const auto sampled = run("sample --model " + run_dir + " --mesh " +
+                               (data / "meshes/Box/b0.obj").string() + " --num 7 --out " + out,
+                           dir);
+  ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
+  const graspecmf::data::AcronymGraspFile record = graspecmf::data::read_acronym_file(out);
+  EXPECT_EQ(record.size(), 7u);
+  EXPECT_EQ(record.object.file, (data / "meshes/Box/b0.obj").string());
+
+  const auto evaluated = run("evaluate --model " + run_dir + " --data " + data.string() +
+                                 " --split val --num 4 --out " + (dir / "report.json").string(),
+                             dir);
+  ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
+  EXPECT_NE(evaluated.out.find("mean EMD over 1 objects"), std::string::npos) << evaluated.out;
+  EXPECT_TRUE(fs::exists(dir / "report.json"));
+}
+
+TEST(CliModel, BadInput) {
+  ScratchDir dir;
+  const fs::path data = graspecmf::testing::tiny_dataset(dir);
+  write_file(dir / "tiny.json", kTinyConfig);
+  const std::string run_dir = (dir / "run").string();
+  expect_one_error_line(run("train --config " + (dir / "tiny.json").string() + " --data " +
+                                (dir / "missing").string() + " --out " + run_dir,
+                            dir),
+                        "no such dataset folder");
+  ASSERT_EQ(run("train --config " + (dir / "tiny.json").string() + " --data " + data.string() +
+                    " --out " + run_dir,
+                dir)
+                .exit_code,
+            0);
+  write_file(dir / "empty.xyz", "# no points\n");
+  expect_one_error_line(run("sample --model " + run_dir + " --points " +
+                                (dir / "empty.xyz").string() + " --out " + (dir / "g.h5").string(),
+                            dir),
+                        "empty");
+  write_file(dir / "nan.xyz", "0 0 0\n1 nan 0\n");
+  expect_one_error_line(run("sample --model " + run_dir + " --points " +
+                                (dir / "nan.xyz").string() + " --out " + (dir / "g.h5").string(),
+                            dir),
+                        "nan.xyz");
+  expect_one_error_line(run("sample --model " + (dir / "nowhere").string() + " --points " +
+                                (dir / "nan.xyz").string() + " --out " + (dir / "g.h5").string(),
+                            dir),
+                        "not a training run");
+  // A checkpoint from a different configuration.
+  fs::create_directories(dir / "other");
+  std::string wider = kTinyConfig;
+  wider.replace(wider.find("[8, 8]"), 6, "[8, 16]");
+  write_file(dir / "other/config.json", wider);
+  fs::copy_file(dir / "run/checkpoint.pt", dir / "other/checkpoint.pt");
+  expect_one_error_line(run("evaluate --model " + (dir / "other").string() + " --data " +
+                                data.string() + " --split val",
+                            dir),
+                        "different model configuration");
+  expect_one_error_line(run("evaluate --model " + run_dir, dir),
+                        "exactly one of --data or --acronym");
+}
+
+}  // namespace
