@@ -2,6 +2,7 @@
 // into one line on stderr with exit code 1.
 
 #include <CLI/CLI.hpp>
+#include <cstring>
 #include <iostream>
 #include <string>
 
@@ -10,11 +11,18 @@
 #include "inspect_command.hpp"
 #include "make_dataset_command.hpp"
 #ifdef GRASPECMF_WITH_TORCH
+#include "blas_kernels.hpp"
 #include "model_commands.hpp"
 #endif
 #include "simulate_command.hpp"
 
 int main(int argc, char** argv) {
+#ifdef GRASPECMF_WITH_TORCH
+  if (argc > 1 && (std::strcmp(argv[1], "train") == 0 || std::strcmp(argv[1], "sample") == 0 ||
+                   std::strcmp(argv[1], "evaluate") == 0)) {
+    graspecmf::apps::prefer_fast_blas_kernels(argv);
+  }
+#endif
   CLI::App app("graspecmf: SO(3)-equivariant 6-DoF grasp generation (GraspECMF)", "graspecmf");
   app.set_version_flag("--version", std::string("graspecmf ") + graspecmf::kVersion);
   app.require_subcommand(1);

@@ -1,0 +1,91 @@
+// The paper-sized model on the CPU (issue 5's targets, 2 threads): encoder ≤ 150 ms for 1024
+// points, 100 grasps end to end ≤ 0.5 s with RKMK4-20 + guidance, training step (4 × 300) ≤ 3 s.
+// Every benchmark takes the LibTorch thread count as its last argument.
+
+#include <benchmark/benchmark.h>
+#include <torch/torch.h>
+
+#include "graspecmf/flow/loss.hpp"
+#include "graspecmf/flow/path.hpp"
+#include "graspecmf/flow/prior.hpp"
+#include "graspecmf/train/grasp_sampling.hpp"
+
+namespace {
+
+using graspecmf::nn::GraspFlowModel;
+using graspecmf::train::SamplingSettings;
+using graspecmf::train::TrainConfig;
+
+const GraspFlowModel& paper_model() {
+  static const GraspFlowModel model = [] {
+    torch::manual_seed(0);
+    GraspFlowModel m{graspecmf::nn::GraspFlowModelOptions{}};
+    m->eval();
+    return m;
+  }();
+  return model;
+}
+
+void BM_Encoder1024(benchmark::State& state) {
+  at::set_num_threads(static_cast<int>(state.range(0)));
+  torch::NoGradGuard no_grad;
+  const at::Tensor points = torch::randn({1, 1024, 3});
+  for (auto _ : state) benchmark::DoNotOptimize(paper_model()->encoder->forward(points));
+}
+BENCHMARK(BM_Encoder1024)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// Grasps for one object, encoder included: args = solver (0 euler, 1 heun, 2 rkmk4), steps,
+// grasps, threads.
+void BM_SampleGrasps(benchmark::State& state) {
+  at::set_num_threads(static_cast<int>(state.range(3)));
+  const char* solvers[] = {"euler", "heun", "rkmk4"};
+  SamplingSettings settings;
+  settings.solver = solvers[state.range(0)];
+  settings.steps = static_cast<int>(state.range(1));
+  const auto n = static_cast<std::size_t>(state.range(2));
+  std::vector<Eigen::Vector3d> cloud;
+  graspecmf::Rng rng(1);
+  for (int i = 0; i < 1024; ++i) cloud.emplace_back(rng.normal(), rng.normal(), rng.normal());
+  for (Eigen::Vector3d& q : cloud) q *= 0.04;
+  const TrainConfig config;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        graspecmf::train::sample_grasps(paper_model(), cloud, config, n, settings, 3));
+  }
+  state.counters["grasps/s"] =
+      benchmark::Counter(static_cast<double>(n) * state.iterations(), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_SampleGrasps)
+    ->ArgsProduct({{0}, {10}, {100, 1000}, {1, 2}})
+    ->ArgsProduct({{1}, {10}, {100, 1000}, {1, 2}})
+    ->ArgsProduct({{2}, {20}, {100, 1000}, {1, 2}})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+// One flow-matching step, forward and backward, of 4 objects × 300 grasps.
+void BM_TrainingStep(benchmark::State& state) {
+  at::set_num_threads(static_cast<int>(state.range(0)));
+  torch::manual_seed(0);
+  GraspFlowModel model{graspecmf::nn::GraspFlowModelOptions{}};
+  torch::optim::Adam optimizer(model->parameters(), torch::optim::AdamOptions(1e-4));
+  at::Generator generator = graspecmf::flow::make_generator(1);
+  const at::Tensor points = torch::randn({4, 1024, 3});
+  const graspecmf::flow::PoseBatch x1 = graspecmf::flow::sample_prior(1200, 1.0, generator);
+  const at::Tensor index = torch::arange(4).repeat_interleave(300);
+  for (auto _ : state) {
+    const graspecmf::flow::PoseBatch x0 = graspecmf::flow::sample_prior(1200, 1.0, generator);
+    const at::Tensor t = at::rand({1200}, generator, torch::kFloat);
+    const auto path = graspecmf::flow::geodesic_path(x0, x1, t);
+    const auto keep = graspecmf::flow::cfg_keep_mask(1200, 0.2, generator);
+    const auto velocity =
+        model->forward(model->condition(points), index, path.x_t.R, path.x_t.p, t, keep);
+    const at::Tensor loss =
+        graspecmf::flow::flow_matching_loss(velocity.omega, velocity.v, path.omega, path.v);
+    optimizer.zero_grad();
+    loss.backward();
+    optimizer.step();
+  }
+}
+BENCHMARK(BM_TrainingStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
