@@ -26,6 +26,16 @@ const GraspFlowModel& paper_model() {
   return model;
 }
 
+// The machine's float32 matrix-product rate, the yardstick for the model's FLOP counts.
+void BM_MatMul1024(benchmark::State& state) {
+  at::set_num_threads(static_cast<int>(state.range(0)));
+  const at::Tensor a = torch::randn({1024, 1024}), b = torch::randn({1024, 1024});
+  for (auto _ : state) benchmark::DoNotOptimize(a.matmul(b));
+  state.counters["GFLOP/s"] = benchmark::Counter(
+      2.0 * 1024 * 1024 * 1024 * state.iterations() / 1e9, benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_MatMul1024)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 void BM_Encoder1024(benchmark::State& state) {
   at::set_num_threads(static_cast<int>(state.range(0)));
   torch::NoGradGuard no_grad;
