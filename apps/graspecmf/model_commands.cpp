@@ -130,11 +130,27 @@ void run_sample(const SampleArgs& a) {
 // ---- evaluate ----
 
 struct EvaluateArgs {
-  std::string model, data, split = "test", acronym, mesh_root, out, markdown;
+  std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
+  bool baselines = false;
   std::size_t num = 0;
   std::uint64_t seed = 0;
   int threads = kDefaultThreads;
 };
+
+// The objects of one split of a dataset folder with splits.json.
+std::vector<data::GraspObject> split_objects(const std::string& root, const std::string& split) {
+  if (!fs::is_directory(root)) throw Error(root + ": no such dataset folder");
+  const data::AcronymDataset dataset = data::AcronymDataset::open(root);
+  const fs::path split_file = fs::path(root) / "splits.json";
+  if (!fs::exists(split_file)) throw Error(split_file.string() + ": no split file");
+  std::vector<data::GraspObject> objects;
+  for (const data::ObjectEntry& entry :
+       dataset.select(data::read_split_file(split_file).part(split))) {
+    objects.push_back(data::AcronymDataset::load(entry));
+  }
+  if (objects.empty()) throw Error(root + ": the " + split + " split is empty");
+  return objects;
+}
 
 std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
   if (a.data.empty() == a.acronym.empty()) {
@@ -151,56 +167,73 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
     if (object.grasps.empty()) throw Error(a.acronym + ": no successful grasps to compare with");
     return {object};
   }
-  if (!fs::is_directory(a.data)) throw Error(a.data + ": no such dataset folder");
-  const data::AcronymDataset dataset = data::AcronymDataset::open(a.data);
-  const fs::path split_file = fs::path(a.data) / "splits.json";
-  if (!fs::exists(split_file)) throw Error(split_file.string() + ": no split file");
-  std::vector<data::GraspObject> objects;
-  for (const data::ObjectEntry& entry :
-       dataset.select(data::read_split_file(split_file).part(a.split))) {
-    objects.push_back(data::AcronymDataset::load(entry));
-  }
-  if (objects.empty()) throw Error("evaluate: the " + a.split + " split is empty");
-  return objects;
+  return split_objects(a.data, a.split);
 }
 
 void run_evaluate(const EvaluateArgs& a) {
   at::set_num_threads(a.threads);
   const train::TrainedModel trained = train::load_trained_model(a.model);
   const std::vector<data::GraspObject> objects = evaluation_objects(a);
+  std::vector<data::GraspObject> training;
+  if (a.baselines) {
+    const std::string root = a.train_data.empty() ? a.data : a.train_data;
+    if (root.empty()) throw Error("evaluate: --baselines with --acronym needs --train-data DIR");
+    training = split_objects(root, "train");
+  }
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
-  double total = 0;
-  std::string table = "| object | n | EMD (3 rotations) | mean |\n|---|---|---|---|\n";
+  double total = 0, total_random = 0, total_nearest = 0;
+  std::string table =
+      a.baselines ? "| object | n | EMD (3 rotations) | mean | random | nearest training object |\n"
+                    "|---|---|---|---|---|---|\n"
+                  : "| object | n | EMD (3 rotations) | mean |\n|---|---|---|---|\n";
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
     const train::ObjectEvaluation e =
         train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
                                trained.config.sampling, a.seed);
-    per_object.push_back(
-        {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}});
-    table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |\n", e.name, e.n, e.emd[0],
+    json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
+    table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
+    if (a.baselines) {
+      const train::BaselineEvaluation b = train::evaluate_baselines(object, training, n, a.seed);
+      entry["random_emd"] = b.random_emd;
+      entry["nearest_training_object"] = b.nearest;
+      entry["nearest_emd"] = b.nearest_emd;
+      table += fmt::format(" {:.4f} | {:.4f} ({}) |", b.random_emd, b.nearest_emd, b.nearest);
+      total_random += b.random_emd;
+      total_nearest += b.nearest_emd;
+    }
+    table += "\n";
+    per_object.push_back(entry);
     total += e.mean_emd;
     progress.update(i + 1);
   }
   progress.finish();
-  const double mean = total / static_cast<double>(objects.size());
-  const json report = {{"model", a.model},
-                       {"step", trained.step},
-                       {"sampling",
-                        {{"solver", trained.config.sampling.solver},
-                         {"steps", trained.config.sampling.steps},
-                         {"guidance", trained.config.sampling.guidance}}},
-                       {"seed", a.seed},
-                       {"objects", per_object},
-                       {"mean_emd", mean}};
-  std::cout << table << fmt::format("mean EMD over {} objects: {:.4f}\n", objects.size(), mean);
+  const double count = static_cast<double>(objects.size());
+  json report = {{"model", a.model},
+                 {"step", trained.step},
+                 {"sampling",
+                  {{"solver", trained.config.sampling.solver},
+                   {"steps", trained.config.sampling.steps},
+                   {"guidance", trained.config.sampling.guidance}}},
+                 {"seed", a.seed},
+                 {"objects", per_object},
+                 {"mean_emd", total / count}};
+  std::string summary =
+      fmt::format("mean EMD over {} objects: {:.4f}", objects.size(), total / count);
+  if (a.baselines) {
+    report["mean_random_emd"] = total_random / count;
+    report["mean_nearest_emd"] = total_nearest / count;
+    summary += fmt::format(" (random grasps {:.4f}, nearest training object {:.4f})",
+                           total_random / count, total_nearest / count);
+  }
+  std::cout << table << summary << "\n";
   if (!a.out.empty()) write_text_atomically(a.out, report.dump(1) + "\n");
   if (!a.markdown.empty()) {
-    write_text_atomically(a.markdown, fmt::format("# EMD of {} (step {})\n\n{}\nmean EMD: {:.4f}\n",
-                                                  a.model, trained.step, table, mean));
+    write_text_atomically(a.markdown, fmt::format("# EMD of {} (step {})\n\n{}\n{}\n", a.model,
+                                                  trained.step, table, summary));
   }
 }
 
@@ -245,6 +278,10 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
   eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
   eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  eval_cmd->add_flag("--baselines", e->baselines,
+                     "Also report random grasps and the nearest training object's grasps");
+  eval_cmd->add_option("--train-data", e->train_data,
+                       "Dataset whose train split the nearest-object baseline searches");
   eval_cmd->add_option("--out", e->out, "JSON report");
   eval_cmd->add_option("--markdown", e->markdown, "Markdown report");
   eval_cmd->callback([e] { run_evaluate(*e); });

@@ -45,11 +45,13 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_EQ(record.size(), 7u);
   EXPECT_EQ(record.object.file, (data / "meshes/Box/b0.obj").string());
 
-  const auto evaluated = run("evaluate --model " + run_dir + " --data " + data.string() +
-                                 " --split val --num 4 --out " + (dir / "report.json").string(),
-                             dir);
+  const auto evaluated =
+      run("evaluate --model " + run_dir + " --data " + data.string() +
+              " --split val --num 4 --baselines --out " + (dir / "report.json").string(),
+          dir);
   ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
   EXPECT_NE(evaluated.out.find("mean EMD over 1 objects"), std::string::npos) << evaluated.out;
+  EXPECT_NE(evaluated.out.find("nearest training object"), std::string::npos) << evaluated.out;
   EXPECT_TRUE(fs::exists(dir / "report.json"));
 }
 

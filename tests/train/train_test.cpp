@@ -11,6 +11,7 @@
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 #include "graspecmf/train/checkpoint.hpp"
+#include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
 #include "test_support.hpp"
@@ -192,6 +193,24 @@ TEST(Trainer, BadInputIsOneClearError) {
   std::ofstream(dir / "mismatch/config.json") << to_json(wider).dump();
   fs::copy_file(dir / "run/checkpoint.pt", dir / "mismatch/checkpoint.pt");
   EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
+}
+
+TEST(Baselines, NearestObjectAndRandomGrasps) {
+  const ScratchDir dir;
+  const fs::path root = tiny_dataset(dir);
+  const data::AcronymDataset dataset = data::AcronymDataset::open(root);
+  std::vector<data::GraspObject> boxes;
+  for (const data::ObjectEntry& entry : dataset.objects())
+    boxes.push_back(data::AcronymDataset::load(entry));
+  ASSERT_EQ(boxes.size(), 3u);
+  // The 6 cm box's nearest shape among the 4 and 5 cm boxes is the 5 cm one.
+  const BaselineEvaluation b = evaluate_baselines(boxes[2], {boxes[0], boxes[1]}, 50, 7);
+  EXPECT_EQ(b.nearest, boxes[1].name);
+  EXPECT_EQ(b.n, 50u);
+  EXPECT_GT(b.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
+  // An object is its own nearest neighbour with identical grasps: EMD 0.
+  EXPECT_NEAR(evaluate_baselines(boxes[0], {boxes[1], boxes[0]}, 50, 7).nearest_emd, 0.0, 1e-12);
+  EXPECT_THROW(evaluate_baselines(boxes[0], {}, 50, 7), Error);
 }
 
 }  // namespace

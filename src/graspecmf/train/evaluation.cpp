@@ -1,10 +1,14 @@
 #include "graspecmf/train/evaluation.hpp"
 
+#include <limits>
 #include <numeric>
 
+#include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
+#include "graspecmf/metrics/baselines.hpp"
 #include "graspecmf/metrics/emd.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 
@@ -48,6 +52,58 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
   }
   result.mean_emd = std::accumulate(result.emd.begin(), result.emd.end(), 0.0) /
                     static_cast<double>(result.emd.size());
+  return result;
+}
+
+namespace {
+
+constexpr std::size_t kShapePoints = 512;
+
+// A seeded surface cloud of the object, centred on its centroid; the centroid is returned too.
+std::vector<Eigen::Vector3d> centred_cloud(const data::GraspObject& object, std::uint64_t seed,
+                                           Eigen::Vector3d& centroid) {
+  std::vector<Eigen::Vector3d> cloud =
+      geometry::sample_surface(object.mesh, kShapePoints, seed).points;
+  centroid = Eigen::Vector3d::Zero();
+  for (const Eigen::Vector3d& q : cloud) centroid += q / static_cast<double>(cloud.size());
+  for (Eigen::Vector3d& q : cloud) q -= centroid;
+  return cloud;
+}
+
+}  // namespace
+
+BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
+                                      const std::vector<data::GraspObject>& training, std::size_t n,
+                                      std::uint64_t seed) {
+  if (training.empty()) throw Error("the nearest-object baseline needs training objects");
+  BaselineEvaluation result;
+  const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
+  result.n = reference.size();
+  result.random_emd = metrics::earth_movers_distance(
+      metrics::random_grasps_in_box(geometry::bounding_box(object.mesh),
+                                    gripper::panda::kPadCenterZ, result.n, seed + 1),
+      reference);
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), neighbour_centroid = Eigen::Vector3d::Zero();
+  const std::vector<Eigen::Vector3d> cloud = centred_cloud(object, seed, centroid);
+  double best = std::numeric_limits<double>::infinity();
+  const data::GraspObject* nearest = nullptr;
+  for (const data::GraspObject& candidate : training) {
+    Eigen::Vector3d c;
+    const double d = metrics::chamfer_distance(cloud, centred_cloud(candidate, seed, c));
+    if (d < best) {
+      best = d;
+      nearest = &candidate;
+      neighbour_centroid = c;
+    }
+  }
+  result.nearest = nearest->name;
+  std::vector<lie::Pose> moved = reference_grasps(*nearest, result.n, seed);
+  for (lie::Pose& g : moved) g.p += centroid - neighbour_centroid;
+  const std::size_t m = std::min(moved.size(), reference.size());
+  result.nearest_emd = metrics::earth_movers_distance(
+      std::vector<lie::Pose>(moved.begin(), moved.begin() + static_cast<std::ptrdiff_t>(m)),
+      std::vector<lie::Pose>(reference.begin(),
+                             reference.begin() + static_cast<std::ptrdiff_t>(m)));
   return result;
 }
 

@@ -30,4 +30,20 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
                                  const SamplingSettings& settings, std::uint64_t seed);
 
+struct BaselineEvaluation {
+  std::size_t n = 0;         // grasps compared
+  double random_emd = 0.0;   // uniformly random grasps around the object
+  std::string nearest;       // the training object closest in shape
+  double nearest_emd = 0.0;  // its successful grasps, moved to this object's centroid
+};
+
+// The two reference baselines of issue 5, in the object's own frame (a common rotation leaves the
+// EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
+// and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
+// frames sit that far from the surface); and the successful grasps of the training object with the
+// smallest Chamfer distance between centred seeded clouds. Throws Error without training objects.
+BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
+                                      const std::vector<data::GraspObject>& training, std::size_t n,
+                                      std::uint64_t seed);
+
 }  // namespace graspecmf::train
