@@ -2,6 +2,7 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -35,11 +36,18 @@ data::DatasetSplit dataset_split(const data::AcronymDataset& dataset, const fs::
   return data::random_split(dataset.names(), {0.1, 0.1}, seed);
 }
 
+// The split's objects that the dataset could use (the loader skips objects with fewer than 100
+// successful grasps, missing meshes or unreadable files), at most `limit` of them.
 std::vector<data::GraspObject> load_objects(const data::AcronymDataset& dataset,
                                             const std::vector<std::string>& names,
                                             std::size_t limit) {
+  const std::vector<std::string> usable = dataset.names();
+  std::vector<std::string> kept;
+  for (const std::string& name : names) {
+    if (std::find(usable.begin(), usable.end(), name) != usable.end()) kept.push_back(name);
+  }
   std::vector<data::GraspObject> objects;
-  for (const data::ObjectEntry& entry : dataset.select(names)) {
+  for (const data::ObjectEntry& entry : dataset.select(kept)) {
     if (objects.size() == limit) break;
     objects.push_back(data::AcronymDataset::load(entry));
   }
@@ -151,18 +159,17 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   if (!fs::is_directory(data_dir)) throw Error(data_dir.string() + ": no such dataset folder");
   const data::AcronymDataset dataset = data::AcronymDataset::open(data_dir);
   const data::DatasetSplit split = dataset_split(dataset, data_dir, config.seed);
-  if (split.train.empty()) throw Error(data_dir.string() + ": the train split is empty");
-  prepare_run(run_dir, config);
-
   torch::manual_seed(config.seed);
   nn::GraspFlowModel model(config.model);
   torch::optim::Adam optimizer(
       model->parameters(),
       torch::optim::AdamOptions(config.learning_rate).weight_decay(config.weight_decay));
-  data::TrainingSampler sampler(load_objects(dataset, split.train, split.train.size()), config.data,
-                                config.seed);
+  std::vector<data::GraspObject> training = load_objects(dataset, split.train, split.train.size());
+  if (training.empty()) throw Error(data_dir.string() + ": no usable object in the train split");
+  data::TrainingSampler sampler(std::move(training), config.data, config.seed);
   const std::vector<data::GraspObject> validation =
       load_objects(dataset, split.val, config.validation_objects);
+  prepare_run(run_dir, config);
   at::Generator generator = flow::make_generator(config.seed + 1);
 
   TrainResult result;
