@@ -9,6 +9,7 @@
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/gripper/panda.hpp"
+#include "graspecmf/sim/collision_prefilter.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -76,6 +77,7 @@ struct GraspSimulator::Impl {
   int object_body = -1, hand_body = -1, left_body = -1, right_body = -1;
   int object_qpos = -1, hand_qpos = -1, left_qpos = -1, right_qpos = -1;
   int mocap = -1;
+  std::unique_ptr<CollisionPrefilter> prefilter;
 
   int steps(double duration) const {
     return static_cast<int>(std::lround(duration / config.timestep));
@@ -144,6 +146,7 @@ GraspSimulator::GraspSimulator(const SceneObject& object, const TrialConfig& con
   s.left_qpos = joint_qpos(kLeftFinger);
   s.right_qpos = joint_qpos(kRightFinger);
   s.mocap = s.model->body_mocapid[body(kTargetBody)];
+  s.prefilter = std::make_unique<CollisionPrefilter>(s.model);
 }
 
 GraspSimulator::~GraspSimulator() {
@@ -156,6 +159,7 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
   const TrialConfig& c = s.config;
   mjModel* m = s.model;
   mjData* d = s.data;
+  const CollisionPrefilter::Scope prefilter_scope(*s.prefilter);
   mj_resetData(m, d);
   write_pose(lie::Pose{}, d->qpos + s.object_qpos, d->qpos + s.object_qpos + 3);
   write_pose(grasp, d->qpos + s.hand_qpos, d->qpos + s.hand_qpos + 3);
