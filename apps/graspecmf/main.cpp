@@ -15,6 +15,7 @@
 #include "model_commands.hpp"
 #endif
 #include "simulate_command.hpp"
+#include "view_command.hpp"
 
 int main(int argc, char** argv) {
 #ifdef GRASPECMF_WITH_TORCH
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   graspecmf::apps::add_inspect_command(app);
   graspecmf::apps::add_simulate_command(app);
   graspecmf::apps::add_make_dataset_command(app);
+  graspecmf::apps::add_view_command(app);
 #ifdef GRASPECMF_WITH_TORCH
   graspecmf::apps::add_model_commands(app);
 #endif

@@ -173,40 +173,23 @@ TEST(CliSimulate, BadInput) {
   EXPECT_NE(run("simulate " + sample_grasp_file().string() + " --threads 0", dir).exit_code, 0);
 }
 
+TEST(CliView, WritesAnHtmlPageOfTheSampleGrasps) {
+  ScratchDir dir;
+  const std::string out = (dir / "view.html").string();
+  const CliRun r = run("view " + sample_grasp_file().string() + " --max 50 --out " + out, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("50 of 2000 grasps"), std::string::npos) << r.out;
+  const std::string html = read_file(out);
+  EXPECT_NE(html.find("<canvas"), std::string::npos);
+  // 50 markers of 4 segments (stem, bar, two fingers), 9 numbers each.
+  const std::string open = R"(<script id="scene" type="application/json">)";
+  const std::size_t start = html.find(open) + open.size();
+  const auto scene =
+      nlohmann::json::parse(html.substr(start, html.find("</script>", start) - start));
+  EXPECT_EQ(scene["segments"].size() % 9, 0u);
+  EXPECT_GE(scene["segments"].size(), 50u * 9u);
+  expect_one_error_line(run("view " + (dir / "missing.h5").string() + " --out " + out, dir),
+                        "missing.h5");
+}
+
 }  // namespace
-
-TEST(CliMakeDataset, MakesAndResumesASmallMugDataset) {
-  ScratchDir dir;
-  const std::string args = "make-dataset --mugs 1 --seed 5 --grasps 4 --threads 1 --out " +
-                           (dir / "ds").string() + " --cache " + (dir / "cache").string();
-  const CliRun first = run(args, dir);
-  ASSERT_EQ(first.exit_code, 0) << first.err;
-  EXPECT_NE(first.out.find("1 objects: 1 made, 0 already there, 0 skipped"), std::string::npos)
-      << first.out;
-  EXPECT_TRUE(fs::exists(dir / "ds/grasps/Mug_mug-5-0000_1.h5"));
-  const CliRun again = run(args, dir);
-  ASSERT_EQ(again.exit_code, 0) << again.err;
-  EXPECT_NE(again.out.find("0 made, 1 already there"), std::string::npos) << again.out;
-  const CliRun inspect = run("inspect " + (dir / "ds/grasps/Mug_mug-5-0000_1.h5").string(), dir);
-  EXPECT_EQ(inspect.exit_code, 0) << inspect.err;
-  EXPECT_NE(inspect.out.find("watertight       yes"), std::string::npos) << inspect.out;
-}
-
-TEST(CliMakeDataset, BadInput) {
-  ScratchDir dir;
-  graspecmf::testing::write_file(dir / "file", "x");
-  expect_one_error_line(run("make-dataset --mugs 1 --out " + (dir / "file/ds").string(), dir),
-                        "cannot create the output folder");
-  expect_one_error_line(run("make-dataset --preset mugs-v9 --out " + (dir / "a").string(), dir),
-                        "unknown preset");
-  expect_one_error_line(run("make-dataset --mugs 2 --meshes " + dir.path().string() + " --out " +
-                                (dir / "b").string(),
-                            dir),
-                        "exactly one of");
-  expect_one_error_line(
-      run("make-dataset --meshes " + (dir / "none").string() + " --out " + (dir / "c").string(),
-          dir),
-      "not a folder");
-  EXPECT_NE(run("make-dataset --mugs 1 --grasps 0 --out " + (dir / "d").string(), dir).exit_code,
-            0);
-}
