@@ -192,4 +192,40 @@ TEST(CliView, WritesAnHtmlPageOfTheSampleGrasps) {
                         "missing.h5");
 }
 
+TEST(CliMakeDataset, MakesAndResumesASmallMugDataset) {
+  ScratchDir dir;
+  const std::string args = "make-dataset --mugs 1 --seed 5 --grasps 4 --threads 1 --out " +
+                           (dir / "ds").string() + " --cache " + (dir / "cache").string();
+  const CliRun first = run(args, dir);
+  ASSERT_EQ(first.exit_code, 0) << first.err;
+  EXPECT_NE(first.out.find("1 objects: 1 made, 0 already there, 0 skipped"), std::string::npos)
+      << first.out;
+  EXPECT_TRUE(fs::exists(dir / "ds/grasps/Mug_mug-5-0000_1.h5"));
+  const CliRun again = run(args, dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_NE(again.out.find("0 made, 1 already there"), std::string::npos) << again.out;
+  const CliRun inspect = run("inspect " + (dir / "ds/grasps/Mug_mug-5-0000_1.h5").string(), dir);
+  EXPECT_EQ(inspect.exit_code, 0) << inspect.err;
+  EXPECT_NE(inspect.out.find("watertight       yes"), std::string::npos) << inspect.out;
+}
+
+TEST(CliMakeDataset, BadInput) {
+  ScratchDir dir;
+  graspecmf::testing::write_file(dir / "file", "x");
+  expect_one_error_line(run("make-dataset --mugs 1 --out " + (dir / "file/ds").string(), dir),
+                        "cannot create the output folder");
+  expect_one_error_line(run("make-dataset --preset mugs-v9 --out " + (dir / "a").string(), dir),
+                        "unknown preset");
+  expect_one_error_line(run("make-dataset --mugs 2 --meshes " + dir.path().string() + " --out " +
+                                (dir / "b").string(),
+                            dir),
+                        "exactly one of");
+  expect_one_error_line(
+      run("make-dataset --meshes " + (dir / "none").string() + " --out " + (dir / "c").string(),
+          dir),
+      "not a folder");
+  EXPECT_NE(run("make-dataset --mugs 1 --grasps 0 --out " + (dir / "d").string(), dir).exit_code,
+            0);
+}
+
 }  // namespace

@@ -330,19 +330,26 @@ std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& o,
   if (o.threads < 1) throw Error("make-dataset: the number of threads must be at least 1");
   prepare_output(o);
 
+  // Progress counts only the objects this run makes, so the ETA reflects their pace.
   const std::size_t per_object = o.candidates.num_grasps;
-  const std::size_t total = per_object * o.objects.size();
+  std::size_t pending = 0;
+  for (const ObjectSource& s : o.objects) pending += !fs::exists(o.out / grasp_file_name(s));
+  const std::size_t total = std::max<std::size_t>(1, per_object * pending);
+  std::size_t made = 0;
   std::vector<ObjectOutcome> outcomes;
   for (std::size_t i = 0; i < o.objects.size(); ++i) {
-    const std::size_t before = per_object * i;
+    const std::size_t before = std::min(per_object * made, total);
     const auto start = std::chrono::steady_clock::now();
     ObjectOutcome r;
     if (std::optional<ObjectOutcome> resumed = resumed_outcome(o.out, o.objects[i])) {
       r = *resumed;
     } else {
       r = make_object(o, i, [&](std::size_t done) {
-        if (progress.trials) progress.trials(before + std::min(done, per_object), total);
+        if (progress.trials) {
+          progress.trials(std::min(before + std::min(done, per_object), total), total);
+        }
       });
+      ++made;
     }
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcomes.push_back(r);
@@ -352,7 +359,7 @@ std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& o,
                 {"seconds", r.seconds}, {"unstable", r.unstable}, {"threads", o.threads}}
                .dump()
         << "\n";
-    if (progress.trials) progress.trials(before + per_object, total);
+    if (progress.trials && !r.resumed) progress.trials(std::min(per_object * made, total), total);
     if (progress.object) progress.object(r);
   }
   write_manifest(o, outcomes);

@@ -63,7 +63,8 @@ struct ObjectOutcome {
 };
 
 struct DatasetProgress {
-  // Trials finished over all objects and the planned total (objects × candidates requested).
+  // Trials finished and the planned total, over the objects this run makes (objects already
+  // there do not count), the total being those objects × the candidates requested.
   std::function<void(std::size_t done, std::size_t total)> trials;
   // Called after each object is made, resumed or skipped.
   std::function<void(const ObjectOutcome&)> object;
