@@ -3,7 +3,9 @@
 #include <fmt/format.h>
 #include <torch/torch.h>
 
+#include <cmath>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -63,7 +65,8 @@ void run_train(const TrainArgs& a) {
 
 struct SampleArgs {
   std::string model, mesh, points, acronym, mesh_root, out, solver;
-  double scale = 1.0, guidance = 0.0;
+  double scale = 1.0;
+  double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's setting
   std::size_t num = 100;
   int steps = 0, threads = kDefaultThreads;
   std::uint64_t seed = 0;
@@ -106,7 +109,7 @@ void run_sample(const SampleArgs& a) {
   train::SamplingSettings settings = trained.config.sampling;
   if (!a.solver.empty()) settings.solver = a.solver;
   if (a.steps > 0) settings.steps = a.steps;
-  if (a.guidance != 0.0) settings.guidance = a.guidance;
+  if (!std::isnan(a.guidance)) settings.guidance = a.guidance;
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
   const auto [cloud, info] = sample_input(a, points);
   if (cloud.size() < static_cast<std::size_t>(trained.config.model.encoder.k)) {
@@ -262,7 +265,8 @@ void add_model_commands(CLI::App& app) {
   sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
   sample_cmd->add_option("--solver", s->solver, "euler, heun or rkmk4 (default: the run's)");
   sample_cmd->add_option("--steps", s->steps, "ODE steps")->check(CLI::Range(1, 100000));
-  sample_cmd->add_option("--guidance", s->guidance, "Classifier-free guidance weight");
+  sample_cmd->add_option("--guidance", s->guidance,
+                         "Classifier-free guidance weight (0 = unconditional; default: the run's)");
   sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
   sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
