@@ -79,7 +79,7 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
   return fmt::format(
       R"(<mujoco model="graspecmf_grasp_trial">
   <compiler angle="radian" inertiafromgeom="false" boundmass="1e-6" boundinertia="1e-12"/>
-  <option timestep="{timestep}" gravity="0 0 0" cone="elliptic" impratio="10" integrator="implicit">
+  <option timestep="{timestep}" gravity="0 0 0" cone="elliptic" impratio="{impratio}" integrator="implicit">
     <flag multiccd="enable"/>
   </option>
   <default><geom solref="{contact_timeconst} 1" solimp="{solimp}"/></default>
@@ -107,7 +107,7 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
   </actuator>
 </mujoco>
 )",
-      fmt::arg("timestep", config.timestep),
+      fmt::arg("timestep", config.timestep), fmt::arg("impratio", config.friction_impedance_ratio),
       fmt::arg("solimp", fmt::format("{} {} {}", config.contact_dmin, config.contact_dmax,
                                      config.contact_width)),
       fmt::arg("contact_timeconst", config.contact_timeconst), fmt::arg("assets", assets),

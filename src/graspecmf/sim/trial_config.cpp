@@ -21,6 +21,7 @@ constexpr Field kFields[] = {
     {"gravity", &TrialConfig::gravity, true},
     {"friction", &TrialConfig::friction, false},
     {"torsional_friction", &TrialConfig::torsional_friction, true},
+    {"friction_impedance_ratio", &TrialConfig::friction_impedance_ratio, false},
     {"contact_timeconst", &TrialConfig::contact_timeconst, false},
     {"contact_dmin", &TrialConfig::contact_dmin, false},
     {"contact_dmax", &TrialConfig::contact_dmax, false},

@@ -9,10 +9,12 @@ namespace graspecmf::sim {
 
 struct TrialConfig {
   // Physics.
-  double timestep = 0.002;            // s
-  double gravity = 9.81;              // m/s², along −z of the world (object) frame
-  double friction = 0.5;              // sliding friction, object and fingers (tuned; see
-                                      // docs/simulator.md — ACRONYM's FleX value is 1.0)
+  double timestep = 0.002;  // s
+  double gravity = 9.81;    // m/s², along −z of the world (object) frame
+  double friction = 1.0;    // sliding friction, object and fingers (ACRONYM's value)
+  // MuJoCo's impratio: frictional over normal constraint impedance. Below 10 the friction
+  // constraint is softer, so a sustained sideways push creeps (tuned; see docs/simulator.md).
+  double friction_impedance_ratio = 4.0;
   double torsional_friction = 0.005;  // m, torsional friction (MuJoCo condim 4)
   // Contact compliance (MuJoCo solref/solimp): the finger pads are rubber, so contacts are soft.
   double contact_timeconst = 0.004;  // s, contact stiffness (solref; ≥ 2 × timestep)
