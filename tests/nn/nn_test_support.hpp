@@ -7,10 +7,10 @@
 #include <torch/types.h>
 #include <torch/utils.h>
 
-#include <cmath>
 #include <cstdint>
-#include <random>
 #include <vector>
+
+#include "graspecmf/lie/rotation_sets.hpp"
 
 namespace graspecmf::testing {
 
@@ -22,22 +22,10 @@ class NnTest : public ::testing::Test {
   }
 };
 
-// A rotation matrix [3, 3] (float32) from a uniformly random unit quaternion of this seed.
+// A Haar-random rotation matrix [3, 3] (float32) of this seed (lie::random_rotations).
 inline torch::Tensor random_rotation(std::uint64_t seed) {
-  std::mt19937_64 engine(seed);
-  std::normal_distribution<double> normal;
-  double q[4];
-  double norm = 0.0;
-  for (double& c : q) {
-    c = normal(engine);
-    norm += c * c;
-  }
-  norm = std::sqrt(norm);
-  const double w = q[0] / norm, x = q[1] / norm, y = q[2] / norm, z = q[3] / norm;
-  const double m[9] = {1 - 2 * (y * y + z * z), 2 * (x * y - w * z),     2 * (x * z + w * y),
-                       2 * (x * y + w * z),     1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
-                       2 * (x * z - w * y),     2 * (y * z + w * x),     1 - 2 * (x * x + y * y)};
-  return torch::tensor(std::vector<double>(m, m + 9), torch::kDouble)
+  const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> g = lie::random_rotations(1, seed)[0];
+  return torch::tensor(std::vector<double>(g.data(), g.data() + 9), torch::kDouble)
       .view({3, 3})
       .to(torch::kFloat);
 }

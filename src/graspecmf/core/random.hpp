@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace graspecmf {
 
@@ -23,6 +25,12 @@ class Rng {
   double normal();
   // Uniform integer in [0, n) without modulo bias; n must be > 0.
   std::size_t index(std::size_t n);
+
+  // Shuffles values in place (Fisher–Yates, from the back), every order equally likely.
+  template <typename T>
+  void shuffle(std::vector<T>& values) {
+    for (std::size_t i = values.size(); i > 1; --i) std::swap(values[i - 1], values[index(i)]);
+  }
 
   // The complete state as text, and back: a restored generator continues the same stream (for
   // resumable jobs). restore throws Error on text that state() did not produce.

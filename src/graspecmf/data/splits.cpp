@@ -36,7 +36,7 @@ DatasetSplit random_split(std::vector<std::string> names, const SplitFractions& 
   }
   std::sort(names.begin(), names.end());
   Rng rng(seed);
-  for (std::size_t i = names.size(); i > 1; --i) std::swap(names[i - 1], names[rng.index(i)]);
+  rng.shuffle(names);
   const double n = static_cast<double>(names.size());
   const auto num_val = static_cast<std::ptrdiff_t>(std::lround(fractions.val * n));
   const auto num_test = std::min(static_cast<std::ptrdiff_t>(std::lround(fractions.test * n)),

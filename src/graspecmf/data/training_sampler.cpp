@@ -72,8 +72,7 @@ std::vector<ObjectSample> TrainingSampler::next_step() {
     if (cursor_ == order_.size()) {  // a new epoch in a fresh order
       order_.resize(objects_.size());
       std::iota(order_.begin(), order_.end(), std::size_t{0});
-      for (std::size_t i = order_.size(); i > 1; --i)
-        std::swap(order_[i - 1], order_[rng_.index(i)]);
+      rng_.shuffle(order_);
       cursor_ = 0;
     }
     const std::size_t index = order_[cursor_++];

@@ -23,7 +23,7 @@ std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::si
   std::vector<std::size_t> order(object.grasps.size());
   std::iota(order.begin(), order.end(), std::size_t{0});
   Rng rng(seed);
-  for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.index(i)]);
+  rng.shuffle(order);
   order.resize(std::min(n, order.size()));
   std::vector<lie::Pose> grasps;
   for (std::size_t i : order) grasps.push_back(object.grasps[i]);
