@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
@@ -178,10 +179,12 @@ void run_evaluate(const EvaluateArgs& a) {
   const train::TrainedModel trained = train::load_trained_model(a.model);
   const std::vector<data::GraspObject> objects = evaluation_objects(a);
   std::vector<data::GraspObject> training;
+  std::optional<train::TrainingShapes> shapes;
   if (a.baselines) {
     const std::string root = a.train_data.empty() ? a.data : a.train_data;
     if (root.empty()) throw Error("evaluate: --baselines with --acronym needs --train-data DIR");
     training = split_objects(root, "train");
+    shapes.emplace(training, a.seed);
   }
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
@@ -200,7 +203,7 @@ void run_evaluate(const EvaluateArgs& a) {
     table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
     if (a.baselines) {
-      const train::BaselineEvaluation b = train::evaluate_baselines(object, training, n, a.seed);
+      const train::BaselineEvaluation b = train::evaluate_baselines(object, *shapes, n, a.seed);
       entry["random_emd"] = b.random_emd;
       entry["nearest_training_object"] = b.nearest;
       entry["nearest_emd"] = b.nearest_emd;

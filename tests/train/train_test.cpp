@@ -204,13 +204,16 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
     boxes.push_back(data::AcronymDataset::load(entry));
   ASSERT_EQ(boxes.size(), 3u);
   // The 6 cm box's nearest shape among the 4 and 5 cm boxes is the 5 cm one.
-  const BaselineEvaluation b = evaluate_baselines(boxes[2], {boxes[0], boxes[1]}, 50, 7);
+  const std::vector<data::GraspObject> smaller = {boxes[0], boxes[1]};
+  const BaselineEvaluation b = evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 50, 7);
   EXPECT_EQ(b.nearest, boxes[1].name);
   EXPECT_EQ(b.n, 50u);
   EXPECT_GT(b.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
   // An object is its own nearest neighbour with identical grasps: EMD 0.
-  EXPECT_NEAR(evaluate_baselines(boxes[0], {boxes[1], boxes[0]}, 50, 7).nearest_emd, 0.0, 1e-12);
-  EXPECT_THROW(evaluate_baselines(boxes[0], {}, 50, 7), Error);
+  const std::vector<data::GraspObject> with_itself = {boxes[1], boxes[0]};
+  EXPECT_NEAR(evaluate_baselines(boxes[0], TrainingShapes(with_itself, 7), 50, 7).nearest_emd, 0.0,
+              1e-12);
+  EXPECT_THROW(TrainingShapes({}, 7), Error);
 }
 
 }  // namespace

@@ -72,10 +72,34 @@ std::vector<Eigen::Vector3d> centred_cloud(const data::GraspObject& object, std:
 
 }  // namespace
 
+TrainingShapes::TrainingShapes(const std::vector<data::GraspObject>& objects, std::uint64_t seed)
+    : objects_(objects), seed_(seed), centroids_(objects.size()) {
+  if (objects.empty()) throw Error("the nearest-object baseline needs training objects");
+  for (std::size_t i = 0; i < objects.size(); ++i) {
+    clouds_.push_back(centred_cloud(objects[i], seed, centroids_[i]));
+  }
+}
+
+const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object,
+                                                 Eigen::Vector3d& centroid,
+                                                 Eigen::Vector3d& nearest_centroid) const {
+  const std::vector<Eigen::Vector3d> cloud = centred_cloud(object, seed_, centroid);
+  double best = std::numeric_limits<double>::infinity();
+  std::size_t best_index = 0;
+  for (std::size_t i = 0; i < clouds_.size(); ++i) {
+    const double d = metrics::chamfer_distance(cloud, clouds_[i]);
+    if (d < best) {
+      best = d;
+      best_index = i;
+    }
+  }
+  nearest_centroid = centroids_[best_index];
+  return objects_[best_index];
+}
+
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
-                                      const std::vector<data::GraspObject>& training, std::size_t n,
+                                      const TrainingShapes& training, std::size_t n,
                                       std::uint64_t seed) {
-  if (training.empty()) throw Error("the nearest-object baseline needs training objects");
   BaselineEvaluation result;
   const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
   result.n = reference.size();
@@ -83,21 +107,10 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
       metrics::random_grasps_in_box(geometry::bounding_box(object.mesh),
                                     gripper::panda::kPadCenterZ, result.n, seed + 1),
       reference);
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero(), neighbour_centroid = Eigen::Vector3d::Zero();
-  const std::vector<Eigen::Vector3d> cloud = centred_cloud(object, seed, centroid);
-  double best = std::numeric_limits<double>::infinity();
-  const data::GraspObject* nearest = nullptr;
-  for (const data::GraspObject& candidate : training) {
-    Eigen::Vector3d c;
-    const double d = metrics::chamfer_distance(cloud, centred_cloud(candidate, seed, c));
-    if (d < best) {
-      best = d;
-      nearest = &candidate;
-      neighbour_centroid = c;
-    }
-  }
-  result.nearest = nearest->name;
-  std::vector<lie::Pose> moved = reference_grasps(*nearest, result.n, seed);
+  Eigen::Vector3d centroid, neighbour_centroid;
+  const data::GraspObject& nearest = training.nearest(object, centroid, neighbour_centroid);
+  result.nearest = nearest.name;
+  std::vector<lie::Pose> moved = reference_grasps(nearest, result.n, seed);
   for (lie::Pose& g : moved) g.p += centroid - neighbour_centroid;
   const std::size_t m = std::min(moved.size(), reference.size());
   result.nearest_emd = metrics::earth_movers_distance(

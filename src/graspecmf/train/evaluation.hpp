@@ -37,13 +37,30 @@ struct BaselineEvaluation {
   double nearest_emd = 0.0;  // its successful grasps, moved to this object's centroid
 };
 
+// The training objects with their seeded surface clouds centred on their centroids, computed once
+// so that the nearest-object baseline of a whole test split samples each training cloud once.
+class TrainingShapes {
+ public:
+  // Keeps a reference to `objects`, which must outlive this. Throws Error if it is empty.
+  TrainingShapes(const std::vector<data::GraspObject>& objects, std::uint64_t seed);
+  // The training object whose centred cloud is closest (Chamfer) to `object`'s, and its centroid.
+  const data::GraspObject& nearest(const data::GraspObject& object, Eigen::Vector3d& centroid,
+                                   Eigen::Vector3d& nearest_centroid) const;
+
+ private:
+  const std::vector<data::GraspObject>& objects_;
+  std::uint64_t seed_;
+  std::vector<std::vector<Eigen::Vector3d>> clouds_;
+  std::vector<Eigen::Vector3d> centroids_;
+};
+
 // The two reference baselines of issue 5, in the object's own frame (a common rotation leaves the
 // EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
 // and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
 // frames sit that far from the surface); and the successful grasps of the training object with the
-// smallest Chamfer distance between centred seeded clouds. Throws Error without training objects.
+// smallest Chamfer distance between centred seeded clouds.
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
-                                      const std::vector<data::GraspObject>& training, std::size_t n,
+                                      const TrainingShapes& training, std::size_t n,
                                       std::uint64_t seed);
 
 }  // namespace graspecmf::train
