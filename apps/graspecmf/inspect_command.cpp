@@ -2,12 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "graspecmf/data/object_summary.hpp"
+#include "graspecmf/dataset/dataset_report.hpp"
 
 namespace graspecmf::apps {
 namespace {
@@ -17,6 +19,10 @@ struct InspectOptions {
   std::string mesh_root;
   bool json = false;
 };
+
+double percent(std::size_t part, std::size_t whole) {
+  return whole ? 100.0 * static_cast<double>(part) / static_cast<double>(whole) : 0.0;
+}
 
 nlohmann::json vec_json(const Eigen::Vector3d& v) {
   return {v.x(), v.y(), v.z()};
@@ -109,10 +115,8 @@ void print_text(const data::ObjectSummary& s, std::ostream& out) {
                          ? fmt::format(" (finger joint {:g} m)", *r.gripper_configuration)
                          : "");
   if (r.qualities) {
-    out << fmt::format(
-        "grasps           {} ({} successful, {:.1f} %)\n", r.size(), r.num_successful(),
-        r.size() ? 100.0 * static_cast<double>(r.num_successful()) / static_cast<double>(r.size())
-                 : 0.0);
+    out << fmt::format("grasps           {} ({} successful, {:.1f} %)\n", r.size(),
+                       r.num_successful(), percent(r.num_successful(), r.size()));
   } else {
     out << fmt::format("grasps           {} (no success labels)\n", r.size());
   }
@@ -161,18 +165,110 @@ void print_text(const data::ObjectSummary& s, std::ostream& out) {
   }
 }
 
+// The per-object success fractions' quantiles, labelled for text and JSON.
+std::vector<std::pair<std::string, double>> success_quantiles(const dataset::DatasetReport& r) {
+  std::vector<double> fractions;
+  for (const data::ObjectEntry& e : r.objects) {
+    fractions.push_back(e.num_grasps ? static_cast<double>(e.num_successful) /
+                                           static_cast<double>(e.num_grasps)
+                                     : 0.0);
+  }
+  std::vector<std::pair<std::string, double>> q;
+  for (const auto& [label, at] : {std::pair{"min", 0.0},
+                                  {"p10", 0.1},
+                                  {"p25", 0.25},
+                                  {"median", 0.5},
+                                  {"p75", 0.75},
+                                  {"p90", 0.9},
+                                  {"max", 1.0}}) {
+    q.emplace_back(label, dataset::quantile(fractions, at));
+  }
+  return q;
+}
+
+nlohmann::json to_json(const dataset::DatasetReport& r) {
+  nlohmann::json j;
+  for (const data::ObjectEntry& e : r.objects) {
+    j["objects"].push_back(
+        {{"name", e.name}, {"grasps", e.num_grasps}, {"successful", e.num_successful}});
+  }
+  for (const data::SkippedObject& s : r.unreadable) {
+    j["unreadable"].push_back({{"name", s.name}, {"reason", s.reason}});
+  }
+  for (const auto& [label, value] : success_quantiles(r)) j["success_fraction"][label] = value;
+  j["min_successful"] = r.min_successful;
+  j["usable"] = r.usable;
+  if (r.split) {
+    j["split"] = {{"train", r.split->train.size()},
+                  {"val", r.split->val.size()},
+                  {"test", r.split->test.size()}};
+  }
+  j["labelled_objects"] = r.labelled_objects;
+  j["labelling_seconds"] = r.labelling_seconds;
+  return j;
+}
+
+void print_text(const std::string& root, const dataset::DatasetReport& r, std::ostream& out) {
+  std::size_t grasps = 0, successful = 0;
+  for (const data::ObjectEntry& e : r.objects) {
+    grasps += e.num_grasps;
+    successful += e.num_successful;
+  }
+  out << fmt::format("dataset          {}\n", root);
+  out << fmt::format("objects          {} readable, {} unreadable\n", r.objects.size(),
+                     r.unreadable.size());
+  for (const data::SkippedObject& s : r.unreadable) {
+    out << fmt::format("  unreadable     {}: {}\n", s.name, s.reason);
+  }
+  out << fmt::format("grasps           {} ({} successful, {:.1f} %)\n", grasps, successful,
+                     percent(successful, grasps));
+  std::string quantiles;
+  for (const auto& [label, value] : success_quantiles(r)) {
+    quantiles += fmt::format("{}{} {:.3f}", quantiles.empty() ? "" : ", ", label, value);
+  }
+  out << fmt::format("success/object   {}\n", quantiles);
+  out << fmt::format("≥ {} successful  {} of {} objects ({:.1f} %)\n", r.min_successful, r.usable,
+                     r.objects.size(), percent(r.usable, r.objects.size()));
+  for (const data::ObjectEntry& e : r.objects) {
+    if (e.num_successful < r.min_successful) {
+      out << fmt::format("  below          {}: {} of {}\n", e.name, e.num_successful, e.num_grasps);
+    }
+  }
+  if (r.split) {
+    out << fmt::format("split            {} train, {} val, {} test (splits.json)\n",
+                       r.split->train.size(), r.split->val.size(), r.split->test.size());
+  }
+  if (r.labelled_objects > 0) {
+    out << fmt::format("labelling        {} objects in {:.2f} h, {:.1f} objects/hour (log.jsonl)\n",
+                       r.labelled_objects, r.labelling_seconds / 3600.0,
+                       3600.0 * static_cast<double>(r.labelled_objects) / r.labelling_seconds);
+  }
+}
+
 }  // namespace
 
 void add_inspect_command(CLI::App& app) {
   auto options = std::make_shared<InspectOptions>();
-  CLI::App* cmd = app.add_subcommand(
-      "inspect", "Summarise an ACRONYM grasp file and check it against its mesh");
-  cmd->add_option("file", options->grasp_file, "ACRONYM grasp file (.h5)")->required();
+  CLI::App* cmd = app.add_subcommand("inspect",
+                                     "Summarise an ACRONYM grasp file and check it against its "
+                                     "mesh, or summarise a dataset folder");
+  cmd->add_option("file", options->grasp_file,
+                  "ACRONYM grasp file (.h5), or a dataset folder holding grasps/")
+      ->required();
   cmd->add_option("--mesh-root", options->mesh_root,
                   "Folder the file's object/file path is relative to (default: the folder above "
                   "the file's grasps/ folder)");
   cmd->add_flag("--json", options->json, "Print the summary as JSON");
   cmd->callback([options] {
+    if (std::filesystem::is_directory(options->grasp_file)) {
+      const dataset::DatasetReport report = dataset::report_dataset(options->grasp_file);
+      if (options->json) {
+        std::cout << to_json(report).dump(2) << "\n";
+      } else {
+        print_text(options->grasp_file, report, std::cout);
+      }
+      return;
+    }
     const data::ObjectSummary summary =
         data::summarize_acronym_object(options->grasp_file, options->mesh_root);
     if (options->json) {

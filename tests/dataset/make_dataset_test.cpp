@@ -2,12 +2,14 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "../geometry/test_meshes.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/data/splits.hpp"
+#include "graspecmf/dataset/dataset_report.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "test_support.hpp"
 
@@ -68,6 +70,36 @@ TEST(MakeDataset, WritesAnAcronymFolderThatTheDatasetLoaderReads) {
   // Objects with < 100 successful grasps stay out of the split.
   const data::DatasetSplit split = data::read_split_file(dir / "out/splits.json");
   EXPECT_TRUE(split.train.empty() && split.val.empty() && split.test.empty());
+
+  // The folder's report counts what the outcomes say, and the log's two labelled objects.
+  const DatasetReport report = report_dataset(dir / "out", 1);
+  ASSERT_EQ(report.objects.size(), 2u);
+  std::size_t with_one = 0;
+  for (const ObjectOutcome& r : outcomes) with_one += r.successful >= 1;
+  EXPECT_EQ(report.usable, with_one);
+  ASSERT_TRUE(report.split.has_value());
+  EXPECT_EQ(report.labelled_objects, 2u);
+  EXPECT_GT(report.labelling_seconds, 0.0);
+  // A second run resumes both objects; resumed lines add no labelling time.
+  make_dataset(small_mugs(dir / "out", dir / "cache"));
+  const DatasetReport again = report_dataset(dir / "out", 1);
+  EXPECT_EQ(again.labelled_objects, 2u);
+  EXPECT_EQ(again.labelling_seconds, report.labelling_seconds);
+  // A damaged log is an error naming the line.
+  std::ofstream(dir / "out/log.jsonl", std::ios::app) << "{\"name\": \"x\"}\n";
+  EXPECT_THROW(report_dataset(dir / "out"), Error);
+}
+
+TEST(DatasetReport, QuantilesInterpolateBetweenOrderStatistics) {
+  const std::vector<double> v = {4.0, 1.0, 3.0, 2.0, 5.0};
+  EXPECT_EQ(quantile(v, 0.0), 1.0);
+  EXPECT_EQ(quantile(v, 0.5), 3.0);
+  EXPECT_EQ(quantile(v, 1.0), 5.0);
+  EXPECT_DOUBLE_EQ(quantile(v, 0.1), 1.4);
+  EXPECT_DOUBLE_EQ(quantile({2.0, 4.0}, 0.25), 2.5);
+  EXPECT_THROW(quantile({}, 0.5), Error);
+  EXPECT_THROW(quantile(v, 1.5), Error);
+  EXPECT_THROW(report_dataset("/nonexistent/dataset"), Error);
 }
 
 TEST(MakeDataset, AnInterruptedRunResumesToByteIdenticalFiles) {
