@@ -209,6 +209,10 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   EXPECT_EQ(b.nearest, boxes[1].name);
   EXPECT_EQ(b.n, 50u);
   EXPECT_GT(b.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
+  // 120 successful grasps hold two disjoint draws of 50 (a floor) but not of 61.
+  ASSERT_TRUE(b.floor_emd.has_value());
+  EXPECT_GT(*b.floor_emd, 0.0);
+  EXPECT_FALSE(evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 61, 7).floor_emd);
   // An object is its own nearest neighbour with identical grasps: EMD 0.
   const std::vector<data::GraspObject> with_itself = {boxes[1], boxes[0]};
   EXPECT_NEAR(evaluate_baselines(boxes[0], TrainingShapes(with_itself, 7), 50, 7).nearest_emd, 0.0,

@@ -18,15 +18,17 @@ std::vector<Eigen::Matrix3d> test_rotations() {
   return lie::super_fibonacci_rotations(3);
 }
 
+std::vector<lie::Pose> shuffled_grasps(const data::GraspObject& object, std::uint64_t seed) {
+  std::vector<lie::Pose> grasps = object.grasps;
+  Rng rng(seed);
+  rng.shuffle(grasps);
+  return grasps;
+}
+
 std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
                                         std::uint64_t seed) {
-  std::vector<std::size_t> order(object.grasps.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  Rng rng(seed);
-  rng.shuffle(order);
-  order.resize(std::min(n, order.size()));
-  std::vector<lie::Pose> grasps;
-  for (std::size_t i : order) grasps.push_back(object.grasps[i]);
+  std::vector<lie::Pose> grasps = shuffled_grasps(object, seed);
+  grasps.resize(std::min(n, grasps.size()));
   return grasps;
 }
 
@@ -101,8 +103,16 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
                                       std::uint64_t seed) {
   BaselineEvaluation result;
-  const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
+  const std::vector<lie::Pose> shuffled = shuffled_grasps(object, seed);
+  const auto slice = [&](std::size_t offset, std::size_t count) {
+    return std::vector<lie::Pose>(shuffled.begin() + static_cast<std::ptrdiff_t>(offset),
+                                  shuffled.begin() + static_cast<std::ptrdiff_t>(offset + count));
+  };
+  const std::vector<lie::Pose> reference = slice(0, std::min(n, shuffled.size()));
   result.n = reference.size();
+  if (shuffled.size() >= 2 * result.n) {
+    result.floor_emd = metrics::earth_movers_distance(slice(result.n, result.n), reference);
+  }
   result.random_emd = metrics::earth_movers_distance(
       metrics::random_grasps_in_box(geometry::bounding_box(object.mesh),
                                     gripper::panda::kPadCenterZ, result.n, seed + 1),

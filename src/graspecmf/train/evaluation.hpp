@@ -3,6 +3,7 @@
 // seeded clouds, fixed test rotations, n generated against n reference grasps.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct ObjectEvaluation {
 
 // The three fixed test rotations (a super-Fibonacci set; none is the identity).
 std::vector<Eigen::Matrix3d> test_rotations();
-// The first n of a seeded shuffle of the object's successful grasps (all of them if fewer).
+// The object's successful grasps in a seeded shuffle.
+std::vector<lie::Pose> shuffled_grasps(const data::GraspObject& object, std::uint64_t seed);
+// The first n of shuffled_grasps (all of them if fewer).
 std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
                                         std::uint64_t seed);
 // For each rotation g: the object's seeded cloud and reference grasps rotated by g, n grasps
@@ -35,6 +38,9 @@ struct BaselineEvaluation {
   double random_emd = 0.0;   // uniformly random grasps around the object
   std::string nearest;       // the training object closest in shape
   double nearest_emd = 0.0;  // its successful grasps, moved to this object's centroid
+  // The sampling floor: the reference against the next n of the same shuffle (the object's own
+  // grasps), when the object has at least 2n successful grasps.
+  std::optional<double> floor_emd;
 };
 
 // The training objects with their seeded surface clouds centred on their centroids, computed once
@@ -58,7 +64,7 @@ class TrainingShapes {
 // EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
 // and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
 // frames sit that far from the surface); and the successful grasps of the training object with the
-// smallest Chamfer distance between centred seeded clouds.
+// smallest Chamfer distance between centred seeded clouds. Also the sampling floor.
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
                                       std::uint64_t seed);
