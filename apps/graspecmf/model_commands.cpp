@@ -62,14 +62,37 @@ void run_train(const TrainArgs& a) {
       format_duration(result.seconds), a.out);
 }
 
+// ---- sampling settings, shared by sample and evaluate ----
+
+// Command-line overrides of a run's sampling settings; unset ones keep the run's.
+struct SamplingOverrides {
+  std::string solver;
+  int steps = 0;                                               // 0: the run's
+  double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's
+
+  train::SamplingSettings apply(train::SamplingSettings settings) const {
+    if (!solver.empty()) settings.solver = solver;
+    if (steps > 0) settings.steps = steps;
+    if (!std::isnan(guidance)) settings.guidance = guidance;
+    return settings;
+  }
+};
+
+void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
+  cmd->add_option("--solver", o.solver, "euler, heun or rkmk4 (default: the run's)");
+  cmd->add_option("--steps", o.steps, "ODE steps")->check(CLI::Range(1, 100000));
+  cmd->add_option("--guidance", o.guidance,
+                  "Classifier-free guidance weight (0 = unconditional; default: the run's)");
+}
+
 // ---- sample ----
 
 struct SampleArgs {
-  std::string model, mesh, points, acronym, mesh_root, out, solver;
+  std::string model, mesh, points, acronym, mesh_root, out;
   double scale = 1.0;
-  double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's setting
+  SamplingOverrides sampling;
   std::size_t num = 100;
-  int steps = 0, threads = kDefaultThreads;
+  int threads = kDefaultThreads;
   std::uint64_t seed = 0;
 };
 
@@ -107,10 +130,7 @@ std::pair<std::vector<Eigen::Vector3d>, data::AcronymObjectInfo> sample_input(co
 void run_sample(const SampleArgs& a) {
   at::set_num_threads(a.threads);
   const train::TrainedModel trained = train::load_trained_model(a.model);
-  train::SamplingSettings settings = trained.config.sampling;
-  if (!a.solver.empty()) settings.solver = a.solver;
-  if (a.steps > 0) settings.steps = a.steps;
-  if (!std::isnan(a.guidance)) settings.guidance = a.guidance;
+  const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
   const auto [cloud, info] = sample_input(a, points);
   if (cloud.size() < static_cast<std::size_t>(trained.config.model.encoder.k)) {
@@ -136,6 +156,7 @@ void run_sample(const SampleArgs& a) {
 struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
   bool baselines = false;
+  SamplingOverrides sampling;
   std::size_t num = 0;
   std::uint64_t seed = 0;
   int threads = kDefaultThreads;
@@ -186,6 +207,7 @@ void run_evaluate(const EvaluateArgs& a) {
     training = split_objects(root, "train");
     shapes.emplace(training, a.seed);
   }
+  const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
   double total = 0, total_random = 0, total_nearest = 0, total_floor = 0;
@@ -197,9 +219,8 @@ void run_evaluate(const EvaluateArgs& a) {
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
-    const train::ObjectEvaluation e =
-        train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
-                               trained.config.sampling, a.seed);
+    const train::ObjectEvaluation e = train::evaluate_object(
+        trained.model, object, trained.config, train::test_rotations(), n, settings, a.seed);
     json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
     table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
@@ -225,15 +246,14 @@ void run_evaluate(const EvaluateArgs& a) {
   }
   progress.finish();
   const double count = static_cast<double>(objects.size());
-  json report = {{"model", a.model},
-                 {"step", trained.step},
-                 {"sampling",
-                  {{"solver", trained.config.sampling.solver},
-                   {"steps", trained.config.sampling.steps},
-                   {"guidance", trained.config.sampling.guidance}}},
-                 {"seed", a.seed},
-                 {"objects", per_object},
-                 {"mean_emd", total / count}};
+  json report = {
+      {"model", a.model},
+      {"step", trained.step},
+      {"sampling",
+       {{"solver", settings.solver}, {"steps", settings.steps}, {"guidance", settings.guidance}}},
+      {"seed", a.seed},
+      {"objects", per_object},
+      {"mean_emd", total / count}};
   std::string summary =
       fmt::format("mean EMD over {} objects: {:.4f}", objects.size(), total / count);
   if (a.baselines) {
@@ -249,8 +269,10 @@ void run_evaluate(const EvaluateArgs& a) {
   std::cout << table << summary << "\n";
   if (!a.out.empty()) write_text_atomically(a.out, report.dump(1) + "\n");
   if (!a.markdown.empty()) {
-    write_text_atomically(a.markdown, fmt::format("# EMD of {} (step {})\n\n{}\n{}\n", a.model,
-                                                  trained.step, table, summary));
+    write_text_atomically(
+        a.markdown,
+        fmt::format("# EMD of {} (step {}; {}-{}, guidance {})\n\n{}\n{}\n", a.model, trained.step,
+                    settings.solver, settings.steps, settings.guidance, table, summary));
   }
 }
 
@@ -277,10 +299,7 @@ void add_model_commands(CLI::App& app) {
   sample_cmd->add_option("--acronym", s->acronym, "ACRONYM grasp file naming the object");
   sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
   sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
-  sample_cmd->add_option("--solver", s->solver, "euler, heun or rkmk4 (default: the run's)");
-  sample_cmd->add_option("--steps", s->steps, "ODE steps")->check(CLI::Range(1, 100000));
-  sample_cmd->add_option("--guidance", s->guidance,
-                         "Classifier-free guidance weight (0 = unconditional; default: the run's)");
+  add_sampling_options(sample_cmd, s->sampling);
   sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
   sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
@@ -294,6 +313,7 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--acronym", e->acronym, "A single ACRONYM grasp file instead");
   eval_cmd->add_option("--mesh-root", e->mesh_root, "Folder the ACRONYM file's mesh is in");
   eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
+  add_sampling_options(eval_cmd, e->sampling);
   eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
   eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   eval_cmd->add_flag("--baselines", e->baselines,
