@@ -11,6 +11,7 @@
 namespace {
 namespace fs = std::filesystem;
 using graspecmf::testing::expect_one_error_line;
+using graspecmf::testing::read_file;
 using graspecmf::testing::run;
 using graspecmf::testing::ScratchDir;
 using graspecmf::testing::write_file;
@@ -47,12 +48,18 @@ TEST(CliModel, TrainSampleEvaluate) {
 
   const auto evaluated =
       run("evaluate --model " + run_dir + " --data " + data.string() +
-              " --split val --num 4 --baselines --out " + (dir / "report.json").string(),
+              " --split val --num 4 --baselines --solver euler --steps 3 --guidance 1.5 --out " +
+              (dir / "report.json").string(),
           dir);
   ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
   EXPECT_NE(evaluated.out.find("mean EMD over 1 objects"), std::string::npos) << evaluated.out;
   EXPECT_NE(evaluated.out.find("nearest training object"), std::string::npos) << evaluated.out;
-  EXPECT_TRUE(fs::exists(dir / "report.json"));
+  // The report records the sampling settings used, and the sampling floor (120 ≥ 2 × 4 grasps).
+  const nlohmann::json report = nlohmann::json::parse(read_file(dir / "report.json"));
+  EXPECT_EQ(report["sampling"]["solver"], "euler");
+  EXPECT_EQ(report["sampling"]["steps"], 3);
+  EXPECT_EQ(report["sampling"]["guidance"], 1.5);
+  EXPECT_TRUE(report["objects"][0]["floor_emd"].is_number());
 }
 
 TEST(CliModel, BadInput) {
