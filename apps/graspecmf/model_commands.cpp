@@ -166,7 +166,7 @@ struct EvaluateArgs {
 std::vector<data::GraspObject> split_objects(const std::string& root, const std::string& split) {
   if (!fs::is_directory(root)) throw Error(root + ": no such dataset folder");
   const data::AcronymDataset dataset = data::AcronymDataset::open(root);
-  const fs::path split_file = fs::path(root) / "splits.json";
+  const fs::path split_file = fs::path(root) / data::kSplitFileName;
   if (!fs::exists(split_file)) throw Error(split_file.string() + ": no split file");
   std::vector<data::GraspObject> objects;
   for (const data::ObjectEntry& entry :

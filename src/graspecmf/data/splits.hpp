@@ -10,6 +10,9 @@
 
 namespace graspecmf::data {
 
+// The split file's name in a dataset folder, beside grasps/.
+inline constexpr const char* kSplitFileName = "splits.json";
+
 struct DatasetSplit {
   std::vector<std::string> train, val, test;
 

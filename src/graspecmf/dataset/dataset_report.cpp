@@ -7,6 +7,7 @@
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/dataset/make_dataset.hpp"
 
 namespace graspecmf::dataset {
 
@@ -22,8 +23,9 @@ DatasetReport report_dataset(const fs::path& root, std::size_t min_successful) {
   report.min_successful = min_successful;
   for (const data::ObjectEntry& e : report.objects)
     report.usable += e.num_successful >= min_successful;
-  if (fs::exists(root / "splits.json")) report.split = data::read_split_file(root / "splits.json");
-  const fs::path log = root / "log.jsonl";
+  const fs::path split_file = root / data::kSplitFileName;
+  if (fs::exists(split_file)) report.split = data::read_split_file(split_file);
+  const fs::path log = root / kTimingLogName;
   std::ifstream in(log);
   std::string line;
   for (std::size_t number = 1; std::getline(in, line); ++number) {

@@ -238,7 +238,7 @@ void write_split(const MakeDatasetOptions& o, const std::vector<ObjectOutcome>& 
   fractions.val = std::min(1.0, static_cast<double>(o.val_count) / n);
   fractions.test = std::min(1.0 - fractions.val, static_cast<double>(o.test_count) / n);
   data::write_split_file(data::random_split(usable, fractions, derive_seed(o.seed, 0, 2)),
-                         o.out / "splits.json");
+                         o.out / data::kSplitFileName);
 }
 
 void write_preview(const MakeDatasetOptions& o, const std::vector<ObjectOutcome>& outcomes) {
@@ -354,7 +354,7 @@ std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& o,
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcomes.push_back(r);
     if (!r.resumed) write_manifest(o, outcomes);
-    std::ofstream(o.out / "log.jsonl", std::ios::app)
+    std::ofstream(o.out / kTimingLogName, std::ios::app)
         << json{{"name", r.name},       {"resumed", r.resumed},   {"skipped", r.skipped},
                 {"seconds", r.seconds}, {"unstable", r.unstable}, {"threads", o.threads}}
                .dump()

@@ -37,6 +37,9 @@ std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_
 // files map to the same name.
 std::vector<ObjectSource> mesh_folder_sources(const std::filesystem::path& dir, double scale);
 
+// The per-object timing log's name in the output folder (one JSON object per line).
+inline constexpr const char* kTimingLogName = "log.jsonl";
+
 struct MakeDatasetOptions {
   std::filesystem::path out;
   std::vector<ObjectSource> objects;

@@ -31,7 +31,7 @@ constexpr std::uint64_t kValidationSeed = 12345;
 // The dataset's splits: splits.json beside grasps/ when present, else a seeded 80/10/10 split.
 data::DatasetSplit dataset_split(const data::AcronymDataset& dataset, const fs::path& data_dir,
                                  std::uint64_t seed) {
-  const fs::path file = data_dir / "splits.json";
+  const fs::path file = data_dir / data::kSplitFileName;
   if (fs::exists(file)) return data::read_split_file(file);
   return data::random_split(dataset.names(), {0.1, 0.1}, seed);
 }
