@@ -122,42 +122,68 @@ TEST(Sampling, GraspsFollowTheCloudsPosition) {
   EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9), Error);
 }
 
-// The model parameters of a run's checkpoint, flattened.
-at::Tensor run_parameters(const fs::path& run) {
-  const TrainedModel trained = load_trained_model(run);
+// A model's parameters, flattened into one tensor.
+at::Tensor flat_parameters(const nn::GraspFlowModel& model) {
   std::vector<at::Tensor> flat;
-  for (const at::Tensor& p : trained.model->parameters()) flat.push_back(p.flatten());
+  for (const at::Tensor& p : model->parameters()) flat.push_back(p.flatten());
   return torch::cat(flat);
+}
+
+// The model parameters a run loads for sampling and evaluation.
+at::Tensor run_parameters(const fs::path& run) {
+  return flat_parameters(load_trained_model(run).model);
+}
+
+// The losses of a run's log, line by line (timings differ between runs).
+std::vector<double> logged_losses(const fs::path& run) {
+  std::vector<double> out;
+  std::istringstream lines(read_file(run / "log.jsonl"));
+  std::string line;
+  while (std::getline(lines, line)) {
+    const auto record = nlohmann::json::parse(line);
+    if (record.contains("loss")) out.push_back(record["loss"]);
+  }
+  return out;
 }
 
 TEST(Trainer, InterruptedRunResumesBitForBit) {
   const ScratchDir dir;
   const fs::path data = tiny_dataset(dir);
-  const TrainConfig config = tiny_config();
-  train(config, data, dir / "whole", 1);
-  TrainCallbacks stop;
-  stop.step = [](std::int64_t step, std::int64_t) {
-    if (step == 4) throw std::runtime_error("killed");  // after the step-3 checkpoint
-  };
-  EXPECT_THROW(train(config, data, dir / "resumed", 1, stop), std::runtime_error);
-  const TrainResult resumed = train(config, data, dir / "resumed", 1);
-  EXPECT_EQ(resumed.resumed_from, 3);
-  EXPECT_TRUE(torch::equal(run_parameters(dir / "whole"), run_parameters(dir / "resumed")));
-  EXPECT_EQ(read_file(dir / "whole/log.jsonl").size() > 0, true);
-  // The logs agree line for line on the losses (timings differ).
-  const auto losses = [](const std::string& text) {
-    std::vector<double> out;
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line)) {
-      const auto record = nlohmann::json::parse(line);
-      if (record.contains("loss")) out.push_back(record["loss"]);
-    }
-    return out;
-  };
-  EXPECT_EQ(losses(read_file(dir / "whole/log.jsonl")),
-            losses(read_file(dir / "resumed/log.jsonl")));
-  EXPECT_EQ(losses(read_file(dir / "whole/log.jsonl")).size(), 6u);
+  for (const double ema_decay : {0.0, 0.9}) {  // without and with a weight average
+    TrainConfig config = tiny_config();
+    config.ema_decay = ema_decay;
+    const fs::path whole = dir / ("whole" + std::to_string(ema_decay));
+    const fs::path resumed = dir / ("resumed" + std::to_string(ema_decay));
+    train(config, data, whole, 1);
+    TrainCallbacks stop;
+    stop.step = [](std::int64_t step, std::int64_t) {
+      if (step == 4) throw std::runtime_error("killed");  // after the step-3 checkpoint
+    };
+    EXPECT_THROW(train(config, data, resumed, 1, stop), std::runtime_error);
+    EXPECT_EQ(train(config, data, resumed, 1).resumed_from, 3);
+    EXPECT_TRUE(torch::equal(run_parameters(whole), run_parameters(resumed))) << ema_decay;
+    EXPECT_EQ(logged_losses(whole), logged_losses(resumed)) << ema_decay;
+    EXPECT_EQ(logged_losses(whole).size(), 6u);
+  }
+}
+
+TEST(Trainer, WeightAverageIsWhatARunLoads) {
+  const ScratchDir dir;
+  const fs::path data = tiny_dataset(dir);
+  TrainConfig config = tiny_config();
+  config.ema_decay = 0.9;
+  train(config, data, dir / "run", 1);
+  nn::GraspFlowModel last(config.model);
+  load_checkpoint(dir / "run/checkpoint.pt", *last);  // the trained weights themselves
+  const at::Tensor average = run_parameters(dir / "run");
+  EXPECT_TRUE(torch::isfinite(average).all().item<bool>());
+  EXPECT_FALSE(torch::allclose(average, flat_parameters(last)));
+  // A run configured with a weight average whose checkpoint holds none is refused.
+  train(tiny_config(), data, dir / "plain", 1);
+  fs::create_directories(dir / "mislabelled");
+  std::ofstream(dir / "mislabelled/config.json") << to_json(config).dump();
+  fs::copy_file(dir / "plain/checkpoint.pt", dir / "mislabelled/checkpoint.pt");
+  EXPECT_THROW(load_trained_model(dir / "mislabelled"), Error);
 }
 
 TEST(Trainer, ValidationReportsLossAndEmd) {

@@ -20,14 +20,35 @@ std::vector<std::pair<std::string, std::vector<int64_t>>> layout(const torch::nn
   return result;
 }
 
+// Reads the module saved under `key`, refusing one saved for another configuration.
+void read_module(torch::serialize::InputArchive& archive, const std::string& key,
+                 torch::nn::Module& module, const at::Tensor& count, const fs::path& path) {
+  torch::serialize::InputArchive module_archive;
+  if (!archive.try_read(key, module_archive)) {
+    throw Error(path.string() + ": the checkpoint holds no " + key + " weights");
+  }
+  const auto expected = layout(module);
+  module.load(module_archive);
+  if (layout(module) != expected ||
+      count.item<int64_t>() != static_cast<int64_t>(expected.size())) {
+    throw Error(path.string() + ": the checkpoint was made for a different model configuration");
+  }
+}
+
 }  // namespace
 
 void save_checkpoint(const fs::path& path, const torch::nn::Module& model,
-                     const torch::optim::Optimizer& optimizer, const TrainingState& state) {
+                     const torch::optim::Optimizer& optimizer, const TrainingState& state,
+                     const torch::nn::Module* average) {
   torch::serialize::OutputArchive archive, model_archive, optimizer_archive;
   model.save(model_archive);
   optimizer.save(optimizer_archive);
   archive.write("model", model_archive);
+  if (average != nullptr) {
+    torch::serialize::OutputArchive average_archive;
+    average->save(average_archive);
+    archive.write("average", average_archive);
+  }
   archive.write("optimizer", optimizer_archive);
   archive.write("step", torch::tensor({state.step}, torch::kLong));
   archive.write("tensor_count", torch::tensor({static_cast<int64_t>(layout(model).size())}));
@@ -46,20 +67,16 @@ void save_checkpoint(const fs::path& path, const torch::nn::Module& model,
 }
 
 void load_checkpoint(const fs::path& path, torch::nn::Module& model,
-                     torch::optim::Optimizer* optimizer, TrainingState* state) {
+                     torch::optim::Optimizer* optimizer, TrainingState* state,
+                     torch::nn::Module* average) {
   if (!fs::exists(path)) throw Error(path.string() + ": no such checkpoint");
   try {
-    torch::serialize::InputArchive archive, model_archive;
+    torch::serialize::InputArchive archive;
     archive.load_from(path.string());
-    archive.read("model", model_archive);
-    const auto expected = layout(model);
-    model.load(model_archive);
     at::Tensor count;
     archive.read("tensor_count", count);
-    if (layout(model) != expected ||
-        count.item<int64_t>() != static_cast<int64_t>(expected.size())) {
-      throw Error(path.string() + ": the checkpoint was made for a different model configuration");
-    }
+    read_module(archive, "model", model, count, path);
+    if (average != nullptr) read_module(archive, "average", *average, count, path);
     if (optimizer != nullptr) {
       torch::serialize::InputArchive optimizer_archive;
       archive.read("optimizer", optimizer_archive);

@@ -17,12 +17,16 @@ struct TrainingState {
   at::Tensor generator;       // the flow generator's get_state()
 };
 
-// Writes the checkpoint atomically (a failure leaves any old file untouched).
+// Writes the checkpoint atomically (a failure leaves any old file untouched). `average`, when
+// given, is the moving average of the weights (a module of model's configuration).
 void save_checkpoint(const std::filesystem::path& path, const torch::nn::Module& model,
-                     const torch::optim::Optimizer& optimizer, const TrainingState& state);
-// Loads parameters into model (and, when given, the optimizer state and the training state).
-// Throws Error if the file is missing, unreadable, or made for a different configuration.
+                     const torch::optim::Optimizer& optimizer, const TrainingState& state,
+                     const torch::nn::Module* average = nullptr);
+// Loads parameters into model (and, when given, the optimizer state, the training state and the
+// weight average). Throws Error if the file is missing, unreadable, made for a different
+// configuration, or lacks a requested weight average.
 void load_checkpoint(const std::filesystem::path& path, torch::nn::Module& model,
-                     torch::optim::Optimizer* optimizer = nullptr, TrainingState* state = nullptr);
+                     torch::optim::Optimizer* optimizer = nullptr, TrainingState* state = nullptr,
+                     torch::nn::Module* average = nullptr);
 
 }  // namespace graspecmf::train

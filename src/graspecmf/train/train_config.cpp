@@ -52,6 +52,8 @@ void validate(const TrainConfig& c) {
   if (!(c.learning_rate > 0) || !(c.weight_decay >= 0)) {
     throw Error("train config: learning_rate must be > 0 and weight_decay ≥ 0");
   }
+  if (!(c.ema_decay >= 0 && c.ema_decay < 1))
+    throw Error("train config: ema_decay must be in [0, 1)");
   if (!(c.cfg_drop >= 0 && c.cfg_drop <= 1))
     throw Error("train config: cfg_drop must be in [0, 1]");
   if (!(c.prior_position_std > 0)) throw Error("train config: prior_position_std must be > 0");
@@ -83,6 +85,7 @@ json to_json(const TrainConfig& c) {
           {"steps", c.steps},
           {"learning_rate", c.learning_rate},
           {"weight_decay", c.weight_decay},
+          {"ema_decay", c.ema_decay},
           {"cfg_drop", c.cfg_drop},
           {"prior_position_std", c.prior_position_std},
           {"seed", c.seed},
@@ -100,9 +103,9 @@ json to_json(const TrainConfig& c) {
 TrainConfig train_config_from_json(const json& j) {
   TrainConfig c;
   only(j,
-       {"model", "data", "steps", "learning_rate", "weight_decay", "cfg_drop", "prior_position_std",
-        "seed", "log_every", "checkpoint_every", "validate_every", "validation_grasps",
-        "validation_objects", "sampling"},
+       {"model", "data", "steps", "learning_rate", "weight_decay", "ema_decay", "cfg_drop",
+        "prior_position_std", "seed", "log_every", "checkpoint_every", "validate_every",
+        "validation_grasps", "validation_objects", "sampling"},
        "");
   if (j.contains("model")) {
     const json& m = j["model"];
@@ -136,6 +139,7 @@ TrainConfig train_config_from_json(const json& j) {
   read(j, "steps", c.steps, "");
   read(j, "learning_rate", c.learning_rate, "");
   read(j, "weight_decay", c.weight_decay, "");
+  read(j, "ema_decay", c.ema_decay, "");
   read(j, "cfg_drop", c.cfg_drop, "");
   read(j, "prior_position_std", c.prior_position_std, "");
   read(j, "seed", c.seed, "");

@@ -25,6 +25,10 @@ struct TrainConfig {
   std::int64_t steps = 100000;
   double learning_rate = 1e-4;  // Adam
   double weight_decay = 1e-6;
+  // Exponential moving average of the weights, updated after every step with decay
+  // min(ema_decay, (1 + step) / (10 + step)); 0 turns it off. Validation, sample and evaluate
+  // use the average when it is on.
+  double ema_decay = 0.0;
   double cfg_drop = 0.2;            // probability of the null condition per grasp
   double prior_position_std = 1.0;  // in network units (× 1 / position_scale metres)
   std::uint64_t seed = 0;

@@ -117,6 +117,15 @@ json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspOb
   return record;
 }
 
+// average ← keep·average + (1 − keep)·model, parameter by parameter (keep = 0 copies).
+void blend_weights(const nn::GraspFlowModel& average, const nn::GraspFlowModel& model,
+                   double keep) {
+  torch::NoGradGuard no_grad;
+  const auto target = average->parameters();
+  const auto source = model->parameters();
+  for (std::size_t i = 0; i < target.size(); ++i) target[i].mul_(keep).add_(source[i], 1 - keep);
+}
+
 void append_line(const fs::path& path, const json& record) {
   std::ofstream(path, std::ios::app) << record.dump() << "\n";
 }
@@ -161,6 +170,11 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   const data::DatasetSplit split = dataset_split(dataset, data_dir, config.seed);
   torch::manual_seed(config.seed);
   nn::GraspFlowModel model(config.model);
+  nn::GraspFlowModel average{nullptr};  // the weight average, when ema_decay > 0
+  if (config.ema_decay > 0) {
+    average = nn::GraspFlowModel(config.model);
+    blend_weights(average, model, 0.0);
+  }
   torch::optim::Adam optimizer(
       model->parameters(),
       torch::optim::AdamOptions(config.learning_rate).weight_decay(config.weight_decay));
@@ -176,14 +190,15 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   const fs::path checkpoint = run_dir / kCheckpointFile;
   if (fs::exists(checkpoint)) {
     TrainingState state;
-    load_checkpoint(checkpoint, *model, &optimizer, &state);
+    load_checkpoint(checkpoint, *model, &optimizer, &state, average ? average.get() : nullptr);
     sampler.restore(state.sampler_state);
     generator.set_state(state.generator);
     result.resumed_from = state.step;
     truncate_log(run_dir / kLogFile, state.step);
   }
   const auto save = [&](std::int64_t step) {
-    save_checkpoint(checkpoint, *model, optimizer, {step, sampler.state(), generator.get_state()});
+    save_checkpoint(checkpoint, *model, optimizer, {step, sampler.state(), generator.get_state()},
+                    average ? average.get() : nullptr);
   };
 
   model->train();
@@ -196,6 +211,10 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
     optimizer.zero_grad();
     loss.backward();
     optimizer.step();
+    if (average) {
+      const auto s = static_cast<double>(step);
+      blend_weights(average, model, std::min(config.ema_decay, (1 + s) / (10 + s)));
+    }
     interval_loss += loss.item<double>();
     ++interval_steps;
     if (step % config.log_every == 0 || step == config.steps) {
@@ -213,7 +232,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
       interval_steps = 0;
     }
     if ((config.validate_every > 0 && step % config.validate_every == 0) || step == config.steps) {
-      const json record = validation_record(model, validation, config, step);
+      const json record = validation_record(average ? average : model, validation, config, step);
       append_line(run_dir / kLogFile, record);
       if (callbacks.record) callbacks.record(record);
     }
@@ -233,7 +252,10 @@ TrainedModel load_trained_model(const fs::path& run_dir) {
   trained.config = read_train_config(config_file);
   trained.model = nn::GraspFlowModel(trained.config.model);
   TrainingState state;
-  load_checkpoint(run_dir / kCheckpointFile, *trained.model, nullptr, &state);
+  // With a weight average, the average overwrites the trained weights just loaded.
+  nn::GraspFlowModelImpl& module = *trained.model;
+  load_checkpoint(run_dir / kCheckpointFile, module, nullptr, &state,
+                  trained.config.ema_decay > 0 ? &module : nullptr);
   trained.step = state.step;
   trained.model->eval();
   return trained;

@@ -37,8 +37,8 @@ struct TrainedModel {
   std::int64_t step = 0;
 };
 
-// The run folder's configuration and latest checkpoint. Throws Error if either is missing, or the
-// checkpoint does not fit the configuration.
+// The run folder's configuration and latest checkpoint (its weight average when ema_decay > 0).
+// Throws Error if either is missing, or the checkpoint does not fit the configuration.
 TrainedModel load_trained_model(const std::filesystem::path& run_dir);
 
 }  // namespace graspecmf::train
