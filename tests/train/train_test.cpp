@@ -70,6 +70,8 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"stepz", 3}}), Error);
   EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"k", "forty"}}}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"cfg_drop", 1.5}}), Error);
+  EXPECT_THROW(train_config_from_json({{"ema_decay", 1.0}}), Error);
+  EXPECT_THROW(train_config_from_json({{"ema_decay", -0.1}}), Error);
   EXPECT_THROW(train_config_from_json({{"sampling", {{"solver", "rk45"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"augmentation", "xyz"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"points", 8}, {"k", 16}}}}}}),
