@@ -126,6 +126,8 @@ void run(const SimulateOptions& o) {
                       {"closing_angular", r.closing_angular},
                       {"shaking_linear", r.shaking_linear},
                       {"shaking_angular", r.shaking_angular},
+                      {"closing_slip", r.closing_slip},
+                      {"shaking_slip", r.shaking_slip},
                       {"final_opening", r.final_opening}});
   }
   write_text_atomically(o.out, summary.dump(1) + "\n");

@@ -28,6 +28,8 @@ TEST(GraspTrial, HoldsABoxGraspedAcrossItsMiddle) {
   EXPECT_TRUE(r.success);
   EXPECT_NEAR(r.final_opening, 0.05, 0.002);
   EXPECT_LT(r.shaking_linear, 0.01);
+  EXPECT_LT(r.closing_slip, 0.01);
+  EXPECT_LT(r.shaking_slip, 0.01);
 }
 
 TEST(GraspTrial, FailsWhenTheHandClosesOnAir) {
@@ -52,6 +54,7 @@ TEST(GraspTrial, RepeatedTrialsAreIdentical) {
   EXPECT_EQ(a.success, b.success);
   EXPECT_EQ(a.shaking_linear, b.shaking_linear);
   EXPECT_EQ(a.closing_angular, b.closing_angular);
+  EXPECT_EQ(a.shaking_slip, b.shaking_slip);
 }
 
 TEST(TrialConfig, JsonRoundTripAndValidation) {

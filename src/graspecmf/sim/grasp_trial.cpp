@@ -99,9 +99,11 @@ struct GraspSimulator::Impl {
   }
 
   // Steps `count` times with the target at target_at(step); adds the relative motion to the
-  // integrals. Returns false as soon as the simulation becomes unstable.
+  // integrals (slip: the path length of the object point `tracked`, given in the object frame).
+  // Returns false as soon as the simulation becomes unstable.
   template <typename TargetAt>
-  bool advance(int count, TargetAt&& target_at, double& linear, double& angular) {
+  bool advance(int count, TargetAt&& target_at, double& linear, double& angular, double& slip,
+               const Vec3& tracked) {
     lie::Pose previous = relative_pose();
     for (int i = 0; i < count; ++i) {
       write_pose(target_at(i), data->mocap_pos + 3 * mocap, data->mocap_quat + 4 * mocap);
@@ -110,6 +112,7 @@ struct GraspSimulator::Impl {
       const lie::Pose current = relative_pose();
       linear += (current.p - previous.p).norm();
       angular += lie::so3_distance(previous.R, current.R);
+      slip += (lie::apply(current, tracked) - lie::apply(previous, tracked)).norm();
       previous = current;
     }
     return true;
@@ -184,16 +187,19 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
     d->ctrl[0] = d->ctrl[1] = open - (open + kSqueezePastClosed) * fraction;
     return grasp;
   };
-  if (!s.advance(close_steps, closing, result.closing_linear, result.closing_angular)) {
+  const Vec3 pad_center_in_hand(0, 0, gripper::panda::kPadCenterZ);
+  if (!s.advance(close_steps, closing, result.closing_linear, result.closing_angular,
+                 result.closing_slip, lie::apply(grasp, pad_center_in_hand))) {
     return finish_unstable();
   }
   const lie::Pose held = s.relative_pose();
+  const Vec3 held_point = lie::apply(lie::inverse(held), pad_center_in_hand);
   m->opt.gravity[2] = -c.gravity;
 
   // Settle, lift against the approach axis, then shake along it and about the gripper y axis
   // through the finger-pad centre.
   const Vec3 approach = grasp.R.col(2);
-  const Vec3 pad_center = lie::apply(grasp, Vec3(0, 0, gripper::panda::kPadCenterZ));
+  const Vec3 pad_center = lie::apply(grasp, pad_center_in_hand);
   const int lift_steps = s.steps(c.lift_duration);
   const auto lifted = [&](double fraction) {
     lie::Pose target = grasp;
@@ -210,13 +216,14 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
     target.p = turn * (target.p - pivot) + pivot + approach * c.shake_linear_amplitude * phase;
     return target;
   };
-  double ignored_linear = 0, ignored_angular = 0;
-  if (!s.advance(s.steps(c.settle_duration), at_grasp, ignored_linear, ignored_angular) ||
+  double ignored_linear = 0, ignored_angular = 0, ignored_slip = 0;
+  if (!s.advance(s.steps(c.settle_duration), at_grasp, ignored_linear, ignored_angular,
+                 ignored_slip, held_point) ||
       !s.advance(
           lift_steps, [&](int i) { return lifted((i + 1.0) / lift_steps); }, result.shaking_linear,
-          result.shaking_angular) ||
+          result.shaking_angular, result.shaking_slip, held_point) ||
       !s.advance(static_cast<int>(std::lround(c.shake_cycles * period_steps)), shaken,
-                 result.shaking_linear, result.shaking_angular)) {
+                 result.shaking_linear, result.shaking_angular, result.shaking_slip, held_point)) {
     return finish_unstable();
   }
 

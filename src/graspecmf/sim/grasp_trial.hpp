@@ -15,6 +15,9 @@ struct TrialResult {
   // ACRONYM-style integrals of the object's motion relative to the hand (metres, radians).
   double closing_linear = 0.0, closing_angular = 0.0;
   double shaking_linear = 0.0, shaking_angular = 0.0;
+  // Path length, relative to the hand, of the object point that sat at the finger-pad centre at
+  // the start of the phase: a pivot about the closing axis through the pads does not count.
+  double closing_slip = 0.0, shaking_slip = 0.0;
   double final_opening = 0.0;  // distance between the finger pads at the end, m
 };
 
