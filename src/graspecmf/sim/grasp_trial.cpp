@@ -188,8 +188,10 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
     return grasp;
   };
   const Vec3 pad_center_in_hand(0, 0, gripper::panda::kPadCenterZ);
+  // In the world frame, which is the object frame at the start.
+  const Vec3 pad_center = lie::apply(grasp, pad_center_in_hand);
   if (!s.advance(close_steps, closing, result.closing_linear, result.closing_angular,
-                 result.closing_slip, lie::apply(grasp, pad_center_in_hand))) {
+                 result.closing_slip, pad_center)) {
     return finish_unstable();
   }
   const lie::Pose held = s.relative_pose();
@@ -199,7 +201,6 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
   // Settle, lift against the approach axis, then shake along it and about the gripper y axis
   // through the finger-pad centre.
   const Vec3 approach = grasp.R.col(2);
-  const Vec3 pad_center = lie::apply(grasp, pad_center_in_hand);
   const int lift_steps = s.steps(c.lift_duration);
   const auto lifted = [&](double fraction) {
     lie::Pose target = grasp;
