@@ -66,8 +66,23 @@ TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
   EXPECT_EQ(paper.model.encoder.k, 40);
 }
 
+TEST(TrainConfig, CosineScheduleFallsFromTheRateToZero) {
+  TrainConfig c = train_config_from_json(
+      {{"steps", 100}, {"learning_rate", 2e-3}, {"learning_rate_schedule", "cosine"}});
+  EXPECT_DOUBLE_EQ(learning_rate_at(c, 1), 2e-3);
+  EXPECT_NEAR(learning_rate_at(c, 51), 1e-3, 1e-15);
+  EXPECT_LT(learning_rate_at(c, 100), 1e-6);
+  EXPECT_GT(learning_rate_at(c, 100), 0);
+  for (std::int64_t step = 2; step <= 100; ++step) {
+    EXPECT_LT(learning_rate_at(c, step), learning_rate_at(c, step - 1));
+  }
+  c.learning_rate_schedule = "constant";
+  EXPECT_DOUBLE_EQ(learning_rate_at(c, 100), 2e-3);
+}
+
 TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"stepz", 3}}), Error);
+  EXPECT_THROW(train_config_from_json({{"learning_rate_schedule", "linear"}}), Error);
   EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"k", "forty"}}}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"cfg_drop", 1.5}}), Error);
   EXPECT_THROW(train_config_from_json({{"ema_decay", 1.0}}), Error);
@@ -151,9 +166,11 @@ std::vector<double> logged_losses(const fs::path& run) {
 TEST(Trainer, InterruptedRunResumesBitForBit) {
   const ScratchDir dir;
   const fs::path data = tiny_dataset(dir);
-  for (const double ema_decay : {0.0, 0.9}) {  // without and with a weight average
+  // Without and with a weight average; the second also with the cosine learning-rate schedule.
+  for (const double ema_decay : {0.0, 0.9}) {
     TrainConfig config = tiny_config();
     config.ema_decay = ema_decay;
+    if (ema_decay > 0) config.learning_rate_schedule = "cosine";
     const fs::path whole = dir / ("whole" + std::to_string(ema_decay));
     const fs::path resumed = dir / ("resumed" + std::to_string(ema_decay));
     train(config, data, whole, 1);

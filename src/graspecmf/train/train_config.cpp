@@ -1,5 +1,6 @@
 #include "graspecmf/train/train_config.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -33,6 +34,12 @@ void only(const json& j, std::initializer_list<const char*> known, const std::st
 
 }  // namespace
 
+double learning_rate_at(const TrainConfig& c, std::int64_t step) {
+  if (c.learning_rate_schedule == "constant") return c.learning_rate;
+  const double progress = static_cast<double>(step - 1) / static_cast<double>(c.steps);
+  return 0.5 * c.learning_rate * (1 + std::cos(M_PI * progress));
+}
+
 void validate(const TrainConfig& c) {
   const auto positive_widths = [](const std::vector<int64_t>& widths) {
     return !widths.empty() &&
@@ -51,6 +58,9 @@ void validate(const TrainConfig& c) {
   if (c.steps < 1) throw Error("train config: steps must be ≥ 1");
   if (!(c.learning_rate > 0) || !(c.weight_decay >= 0)) {
     throw Error("train config: learning_rate must be > 0 and weight_decay ≥ 0");
+  }
+  if (c.learning_rate_schedule != "constant" && c.learning_rate_schedule != "cosine") {
+    throw Error("train config: learning_rate_schedule must be constant or cosine");
   }
   if (!(c.ema_decay >= 0 && c.ema_decay < 1))
     throw Error("train config: ema_decay must be in [0, 1)");
@@ -84,6 +94,7 @@ json to_json(const TrainConfig& c) {
             {"augmentation", data::to_string(c.data.augmentation)}}},
           {"steps", c.steps},
           {"learning_rate", c.learning_rate},
+          {"learning_rate_schedule", c.learning_rate_schedule},
           {"weight_decay", c.weight_decay},
           {"ema_decay", c.ema_decay},
           {"cfg_drop", c.cfg_drop},
@@ -103,9 +114,9 @@ json to_json(const TrainConfig& c) {
 TrainConfig train_config_from_json(const json& j) {
   TrainConfig c;
   only(j,
-       {"model", "data", "steps", "learning_rate", "weight_decay", "ema_decay", "cfg_drop",
-        "prior_position_std", "seed", "log_every", "checkpoint_every", "validate_every",
-        "validation_grasps", "validation_objects", "sampling"},
+       {"model", "data", "steps", "learning_rate", "learning_rate_schedule", "weight_decay",
+        "ema_decay", "cfg_drop", "prior_position_std", "seed", "log_every", "checkpoint_every",
+        "validate_every", "validation_grasps", "validation_objects", "sampling"},
        "");
   if (j.contains("model")) {
     const json& m = j["model"];
@@ -138,6 +149,7 @@ TrainConfig train_config_from_json(const json& j) {
   }
   read(j, "steps", c.steps, "");
   read(j, "learning_rate", c.learning_rate, "");
+  read(j, "learning_rate_schedule", c.learning_rate_schedule, "");
   read(j, "weight_decay", c.weight_decay, "");
   read(j, "ema_decay", c.ema_decay, "");
   read(j, "cfg_drop", c.cfg_drop, "");

@@ -24,6 +24,9 @@ struct TrainConfig {
   data::TrainingSamplerOptions data;  // points follows model.encoder.points
   std::int64_t steps = 100000;
   double learning_rate = 1e-4;  // Adam
+  // "constant", or "cosine": the rate falls from learning_rate to 0 at the last step along
+  // half a cosine period.
+  std::string learning_rate_schedule = "constant";
   double weight_decay = 1e-6;
   // Exponential moving average of the weights, updated after every step with decay
   // min(ema_decay, (1 + step) / (10 + step)); 0 turns it off. Validation, sample and evaluate
@@ -39,6 +42,9 @@ struct TrainConfig {
   std::size_t validation_objects = 10;  // at most this many validation objects
   SamplingSettings sampling;
 };
+
+// The Adam learning rate of step 1 ≤ step ≤ config.steps under the config's schedule.
+double learning_rate_at(const TrainConfig& config, std::int64_t step);
 
 // Throws Error naming the first setting out of range.
 void validate(const TrainConfig& config);

@@ -28,6 +28,13 @@ constexpr const char* kCheckpointFile = "checkpoint.pt";
 constexpr const char* kLogFile = "log.jsonl";
 constexpr std::uint64_t kValidationSeed = 12345;
 
+// Sets every parameter group's Adam learning rate.
+void set_learning_rate(torch::optim::Adam& optimizer, double rate) {
+  for (auto& group : optimizer.param_groups()) {
+    static_cast<torch::optim::AdamOptions&>(group.options()).lr(rate);
+  }
+}
+
 // The dataset's splits: splits.json beside grasps/ when present, else a seeded 80/10/10 split.
 data::DatasetSplit dataset_split(const data::AcronymDataset& dataset, const fs::path& data_dir,
                                  std::uint64_t seed) {
@@ -210,6 +217,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
     const at::Tensor loss = batch_loss(model, to_tensors(sampler.next_step()), config, generator);
     optimizer.zero_grad();
     loss.backward();
+    set_learning_rate(optimizer, learning_rate_at(config, step));
     optimizer.step();
     if (average) {
       const auto s = static_cast<double>(step);
@@ -222,6 +230,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
       const json record = {
           {"step", step},
           {"loss", interval_loss / static_cast<double>(interval_steps)},
+          {"learning_rate", learning_rate_at(config, step)},
           {"seconds_per_step",
            std::chrono::duration<double>(now - interval_start).count() / interval_steps},
           {"threads", threads}};
