@@ -132,6 +132,23 @@ TEST(MakeDataset, RefusesAFolderMadeWithOtherOptions) {
   EXPECT_THROW(make_dataset(o), Error);
 }
 
+// A manifest written before pad_normal_inset existed resumes as labelled without pad normals, and
+// only as that.
+TEST(MakeDataset, AManifestWithoutPadNormalsResumesAsPadNormalsOff) {
+  const ScratchDir dir;
+  MakeDatasetOptions o = small_mugs(dir / "out", dir / "cache");
+  o.objects.resize(1);
+  o.trial.pad_normal_inset = -1.0;
+  make_dataset(o);
+  const fs::path manifest = dir / "out/manifest.json";
+  nlohmann::json old = nlohmann::json::parse(read_file(manifest));
+  ASSERT_EQ(old["options"]["trial"].erase("pad_normal_inset"), 1u);
+  std::ofstream(manifest) << old.dump(1);
+  EXPECT_TRUE(make_dataset(o)[0].resumed);
+  o.trial.pad_normal_inset = 0.003;
+  EXPECT_THROW(make_dataset(o), Error);
+}
+
 TEST(MakeDataset, UnwritableOutputFailsAtOnce) {
   const ScratchDir dir;
   graspecmf::testing::write_file(dir / "a-file", "x");

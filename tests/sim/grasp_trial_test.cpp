@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "box_object.hpp"
@@ -66,6 +67,10 @@ TEST(TrialConfig, JsonRoundTripAndValidation) {
   EXPECT_THROW(trial_config_from_json(nlohmann::json{{"finger_force", -1.0}}), Error);
   EXPECT_THROW(trial_config_from_json(nlohmann::json{{"no_such_parameter", 1.0}}), Error);
   EXPECT_THROW(trial_config_from_json(nlohmann::json{{"timestep", "fast"}}), Error);
+  // A negative pad-normal inset turns the correction off; it must still be finite.
+  EXPECT_EQ(trial_config_from_json(nlohmann::json{{"pad_normal_inset", -1.0}}).pad_normal_inset,
+            -1.0);
+  EXPECT_THROW(trial_config_from_json(nlohmann::json{{"pad_normal_inset", NAN}}), Error);
 }
 
 }  // namespace

@@ -123,6 +123,14 @@ void write_manifest(const MakeDatasetOptions& o, const std::vector<ObjectOutcome
   write_text_atomically(o.out / "manifest.json", manifest.dump(1) + "\n");
 }
 
+// A manifest's options as this version writes them: manifests written before pad_normal_inset
+// existed were labelled with MuJoCo's own contact normals, which that setting calls −1.
+json upgraded_options(json options) {
+  json& trial = options["trial"];
+  if (trial.is_object() && !trial.contains("pad_normal_inset")) trial["pad_normal_inset"] = -1.0;
+  return options;
+}
+
 // Fails unless out can hold the dataset: creates the folders, refuses a folder made with other
 // options, and proves that files can be written there.
 void prepare_output(const MakeDatasetOptions& o) {
@@ -138,7 +146,7 @@ void prepare_output(const MakeDatasetOptions& o) {
     } catch (const json::exception&) {
       throw Error(manifest.string() + ": unreadable; remove it or choose another --out");
     }
-    if (!existing.contains("options") || existing["options"] != options_json(o)) {
+    if (!existing.contains("options") || upgraded_options(existing["options"]) != options_json(o)) {
       throw Error(o.out.string() +
                   " holds a dataset made with other options; choose another --out or remove it");
     }

@@ -21,6 +21,10 @@ inline constexpr double kPalmTopZ = 0.066;           // highest point of the pal
 inline constexpr double kPadCenterZ = 0.1034;        // centre of the finger pads
 inline constexpr double kFingertipZ = 0.1122;        // fingertips
 inline constexpr double kFingerHalfWidthY = 0.0105;  // fingers span y ∈ [−0.0105, 0.0105]
+// The flat inner face of each finger (its pad): y ∈ [−kPadHalfWidthY, kPadHalfWidthY] and
+// z ∈ [kPadBottomZ, kFingertipZ], centred on kPadCenterZ.
+inline constexpr double kPadHalfWidthY = 0.0087;
+inline constexpr double kPadBottomZ = 0.0946;
 
 }  // namespace panda
 

@@ -4,37 +4,12 @@
 
 #include <Eigen/Dense>
 #include <cmath>
-#include <mutex>
 
 namespace graspecmf::sim {
 namespace {
 
 // Boxes closer than this are always handed to the narrow phase.
 constexpr double kSafetyGap = 1e-3;  // m
-
-thread_local const CollisionPrefilter* active_filter = nullptr;
-mjfCollision narrow_phase[mjNGEOMTYPES][mjNGEOMTYPES] = {};
-
-// MuJoCo's narrow phase for the pair, unless this thread's filter finds the pair apart.
-int filtered_collision(const mjModel* m, const mjData* d, mjContact* con, int g1, int g2,
-                       mjtNum margin) {
-  if (active_filter != nullptr && active_filter->apart(m, d, g1, g2)) return 0;
-  return narrow_phase[m->geom_type[g1]][m->geom_type[g2]](m, d, con, g1, g2, margin);
-}
-
-// Routes every convex pair through filtered_collision, once per process; without an active
-// filter the wrapper calls the original function unchanged.
-void install_wrapper() {
-  static std::once_flag once;
-  std::call_once(once, [] {
-    for (int a = 0; a < mjNGEOMTYPES; ++a) {
-      for (int b = 0; b < mjNGEOMTYPES; ++b) {
-        narrow_phase[a][b] = mjCOLLISIONFUNC[a][b];
-        if (mjCOLLISIONFUNC[a][b] != nullptr) mjCOLLISIONFUNC[a][b] = filtered_collision;
-      }
-    }
-  });
-}
 
 using RowMajor = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
@@ -45,7 +20,6 @@ CollisionPrefilter::CollisionPrefilter(const mjModel* model)
       boxed_(static_cast<std::size_t>(model->ngeom), false),
       center_(static_cast<std::size_t>(model->ngeom), Eigen::Vector3d::Zero()),
       half_(static_cast<std::size_t>(model->ngeom), Eigen::Vector3d::Zero()) {
-  install_wrapper();
   for (int g = 0; g < model->ngeom; ++g) {
     const auto i = static_cast<std::size_t>(g);
     if (model->geom_type[g] == mjGEOM_BOX) {
@@ -66,14 +40,6 @@ CollisionPrefilter::CollisionPrefilter(const mjModel* model)
       boxed_[i] = true;
     }
   }
-}
-
-CollisionPrefilter::Scope::Scope(const CollisionPrefilter& filter) : previous_(active_filter) {
-  active_filter = &filter;
-}
-
-CollisionPrefilter::Scope::~Scope() {
-  active_filter = previous_;
 }
 
 bool CollisionPrefilter::apart(const mjModel* model, const mjData* data, int g1, int g2) const {

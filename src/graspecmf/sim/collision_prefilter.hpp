@@ -3,7 +3,7 @@
 // grasp trial the palm and fingers overlap the bounding spheres of most of the object's parts, so
 // MuJoCo 2.2.2 runs MPR on ~60 pairs per step of which ~3 touch; those misses took ~70 % of a
 // trial. A skipped pair is one MPR would also have left without contacts, so results do not
-// change.
+// change. It acts through CollisionHooks (sim/collision_hooks.hpp).
 
 #include <Eigen/Core>
 #include <vector>
@@ -18,18 +18,6 @@ class CollisionPrefilter {
   // Box and mesh geoms get a local box (centre and half extents in the geom frame); other geoms
   // are never skipped.
   explicit CollisionPrefilter(const mjModel_* model);
-
-  // While a Scope lives, this thread's collisions in the filter's model go through the filter.
-  class Scope {
-   public:
-    explicit Scope(const CollisionPrefilter& filter);
-    ~Scope();
-    Scope(const Scope&) = delete;
-    Scope& operator=(const Scope&) = delete;
-
-   private:
-    const CollisionPrefilter* previous_;
-  };
 
   // True if the boxes of geoms g1 and g2 are separated by more than the contact margin plus a
   // safety gap, at the poses in data.

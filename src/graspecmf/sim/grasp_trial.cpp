@@ -9,7 +9,9 @@
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/gripper/panda.hpp"
+#include "graspecmf/sim/collision_hooks.hpp"
 #include "graspecmf/sim/collision_prefilter.hpp"
+#include "graspecmf/sim/pad_contact_normals.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -78,6 +80,7 @@ struct GraspSimulator::Impl {
   int object_qpos = -1, hand_qpos = -1, left_qpos = -1, right_qpos = -1;
   int mocap = -1;
   std::unique_ptr<CollisionPrefilter> prefilter;
+  std::unique_ptr<PadContactNormals> pad_normals;  // null when config.pad_normal_inset < 0
 
   int steps(double duration) const {
     return static_cast<int>(std::lround(duration / config.timestep));
@@ -150,6 +153,9 @@ GraspSimulator::GraspSimulator(const SceneObject& object, const TrialConfig& con
   s.right_qpos = joint_qpos(kRightFinger);
   s.mocap = s.model->body_mocapid[body(kTargetBody)];
   s.prefilter = std::make_unique<CollisionPrefilter>(s.model);
+  if (config.pad_normal_inset >= 0.0) {
+    s.pad_normals = std::make_unique<PadContactNormals>(s.model, config.pad_normal_inset);
+  }
 }
 
 GraspSimulator::~GraspSimulator() {
@@ -162,7 +168,7 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
   const TrialConfig& c = s.config;
   mjModel* m = s.model;
   mjData* d = s.data;
-  const CollisionPrefilter::Scope prefilter_scope(*s.prefilter);
+  const CollisionHooksScope hooks(m, {s.prefilter.get(), s.pad_normals.get()});
   mj_resetData(m, d);
   write_pose(lie::Pose{}, d->qpos + s.object_qpos, d->qpos + s.object_qpos + 3);
   write_pose(grasp, d->qpos + s.hand_qpos, d->qpos + s.hand_qpos + 3);

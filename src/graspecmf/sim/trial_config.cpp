@@ -10,39 +10,43 @@
 namespace graspecmf::sim {
 namespace {
 
-// Every parameter once: its JSON name, its member, and whether zero is allowed.
+// The values a parameter may take.
+enum class Range { kPositive, kNonNegative, kAny };
+
+// Every parameter once: its JSON name, its member, and its range (all must be finite).
 struct Field {
   const char* name;
   double TrialConfig::*member;
-  bool zero_allowed;
+  Range range;
 };
 constexpr Field kFields[] = {
-    {"timestep", &TrialConfig::timestep, false},
-    {"gravity", &TrialConfig::gravity, true},
-    {"friction", &TrialConfig::friction, false},
-    {"torsional_friction", &TrialConfig::torsional_friction, true},
-    {"friction_impedance_ratio", &TrialConfig::friction_impedance_ratio, false},
-    {"contact_timeconst", &TrialConfig::contact_timeconst, false},
-    {"contact_dmin", &TrialConfig::contact_dmin, false},
-    {"contact_dmax", &TrialConfig::contact_dmax, false},
-    {"contact_width", &TrialConfig::contact_width, false},
-    {"default_density", &TrialConfig::default_density, false},
-    {"hand_mass", &TrialConfig::hand_mass, false},
-    {"finger_mass", &TrialConfig::finger_mass, false},
-    {"finger_force", &TrialConfig::finger_force, false},
-    {"finger_gain", &TrialConfig::finger_gain, false},
-    {"finger_damping", &TrialConfig::finger_damping, true},
-    {"finger_armature", &TrialConfig::finger_armature, true},
-    {"close_duration", &TrialConfig::close_duration, false},
-    {"settle_duration", &TrialConfig::settle_duration, true},
-    {"lift_distance", &TrialConfig::lift_distance, true},
-    {"lift_duration", &TrialConfig::lift_duration, false},
-    {"shake_linear_amplitude", &TrialConfig::shake_linear_amplitude, true},
-    {"shake_angular_amplitude", &TrialConfig::shake_angular_amplitude, true},
-    {"shake_frequency", &TrialConfig::shake_frequency, false},
-    {"shake_cycles", &TrialConfig::shake_cycles, true},
-    {"max_relative_translation", &TrialConfig::max_relative_translation, false},
-    {"max_relative_rotation", &TrialConfig::max_relative_rotation, false},
+    {"timestep", &TrialConfig::timestep, Range::kPositive},
+    {"gravity", &TrialConfig::gravity, Range::kNonNegative},
+    {"friction", &TrialConfig::friction, Range::kPositive},
+    {"torsional_friction", &TrialConfig::torsional_friction, Range::kNonNegative},
+    {"friction_impedance_ratio", &TrialConfig::friction_impedance_ratio, Range::kPositive},
+    {"contact_timeconst", &TrialConfig::contact_timeconst, Range::kPositive},
+    {"contact_dmin", &TrialConfig::contact_dmin, Range::kPositive},
+    {"contact_dmax", &TrialConfig::contact_dmax, Range::kPositive},
+    {"contact_width", &TrialConfig::contact_width, Range::kPositive},
+    {"pad_normal_inset", &TrialConfig::pad_normal_inset, Range::kAny},
+    {"default_density", &TrialConfig::default_density, Range::kPositive},
+    {"hand_mass", &TrialConfig::hand_mass, Range::kPositive},
+    {"finger_mass", &TrialConfig::finger_mass, Range::kPositive},
+    {"finger_force", &TrialConfig::finger_force, Range::kPositive},
+    {"finger_gain", &TrialConfig::finger_gain, Range::kPositive},
+    {"finger_damping", &TrialConfig::finger_damping, Range::kNonNegative},
+    {"finger_armature", &TrialConfig::finger_armature, Range::kNonNegative},
+    {"close_duration", &TrialConfig::close_duration, Range::kPositive},
+    {"settle_duration", &TrialConfig::settle_duration, Range::kNonNegative},
+    {"lift_distance", &TrialConfig::lift_distance, Range::kNonNegative},
+    {"lift_duration", &TrialConfig::lift_duration, Range::kPositive},
+    {"shake_linear_amplitude", &TrialConfig::shake_linear_amplitude, Range::kNonNegative},
+    {"shake_angular_amplitude", &TrialConfig::shake_angular_amplitude, Range::kNonNegative},
+    {"shake_frequency", &TrialConfig::shake_frequency, Range::kPositive},
+    {"shake_cycles", &TrialConfig::shake_cycles, Range::kNonNegative},
+    {"max_relative_translation", &TrialConfig::max_relative_translation, Range::kPositive},
+    {"max_relative_rotation", &TrialConfig::max_relative_rotation, Range::kPositive},
 };
 
 }  // namespace
@@ -50,9 +54,15 @@ constexpr Field kFields[] = {
 void validate(const TrialConfig& config) {
   for (const Field& field : kFields) {
     const double value = config.*field.member;
-    if (!std::isfinite(value) || value < 0.0 || (value == 0.0 && !field.zero_allowed)) {
+    const bool ok = field.range == Range::kAny           ? std::isfinite(value)
+                    : field.range == Range::kNonNegative ? std::isfinite(value) && value >= 0.0
+                                                         : std::isfinite(value) && value > 0.0;
+    if (!ok) {
       throw Error(std::string("trial config: ") + field.name + " must be " +
-                  (field.zero_allowed ? "≥ 0" : "> 0") + ", got " + std::to_string(value));
+                  (field.range == Range::kAny           ? "finite"
+                   : field.range == Range::kNonNegative ? "≥ 0"
+                                                        : "> 0") +
+                  ", got " + std::to_string(value));
     }
   }
   if (config.timestep > 0.01) throw Error("trial config: timestep must be at most 0.01 s");

@@ -21,7 +21,11 @@ struct TrialConfig {
   double contact_dmin = 0.95;        // solimp impedance at zero penetration, in (0, 1)
   double contact_dmax = 0.99;        // solimp impedance at contact_width penetration, in (0, 1)
   double contact_width = 0.002;      // m, penetration over which the impedance ramps up
-  double default_density = 150;      // kg/m³, when the grasp file has no mass (ACRONYM: 150)
+  // A finger–object contact whose point lies on a finger's flat pad at least this far (m) inside
+  // its edges is pushed along the pad's normal (sim/pad_contact_normals.hpp); negative: off, all
+  // normals are MuJoCo's.
+  double pad_normal_inset = 0.00225;
+  double default_density = 150;  // kg/m³, when the grasp file has no mass (ACRONYM: 150)
   // Hand: a free body welded softly to a moving target, fingers on force-limited slides.
   double hand_mass = 0.73;       // kg, Franka hand
   double finger_mass = 0.015;    // kg each
