@@ -20,7 +20,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 constexpr std::size_t kAttemptsPerGrasp = 50;  // the default max_attempts per requested grasp
-constexpr std::size_t kMinAttempts = 10000;     // ... but never fewer (mugs accept ~4 % of draws)
+constexpr std::size_t kMinAttempts = 10000;    // ... but never fewer (mugs accept ~4 % of draws)
 constexpr double kTipClearance = 0.002;        // contacts stay this far below the fingertip (m)
 // Finger points within this distance of the innermost one form the pad's inner face (m).
 constexpr double kInnerFaceTolerance = 0.001;
@@ -102,9 +102,9 @@ std::vector<GraspCandidate> sample_antipodal_grasps(const geometry::TriangleMesh
   const double max_width = options.opening - 2.0 * options.width_margin;
   const double cos_cone = std::cos(options.ray_cone);
   const double cos_contact = std::cos(options.max_contact_angle);
-  const std::size_t attempts =
-      options.max_attempts > 0 ? options.max_attempts
-                               : std::max(kMinAttempts, kAttemptsPerGrasp * options.num_grasps);
+  const std::size_t attempts = options.max_attempts > 0
+                                   ? options.max_attempts
+                                   : std::max(kMinAttempts, kAttemptsPerGrasp * options.num_grasps);
 
   Rng rng(seed);
   std::vector<GraspCandidate> candidates;
