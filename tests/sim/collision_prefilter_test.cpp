@@ -8,6 +8,7 @@
 
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
+#include "load_model.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -22,20 +23,9 @@ constexpr const char* kScene = R"(<mujoco>
   </worldbody>
 </mujoco>)";
 
-mjModel* load(const char* xml) {
-  mjVFS vfs;
-  mj_defaultVFS(&vfs);
-  mj_makeEmptyFileVFS(&vfs, "s.xml", static_cast<int>(std::strlen(xml)));
-  std::memcpy(vfs.filedata[0], xml, std::strlen(xml));
-  char error[1000] = "";
-  mjModel* model = mj_loadXML("s.xml", &vfs, error, sizeof(error));
-  mj_deleteVFS(&vfs);
-  return model;
-}
-
 // A pair the filter calls apart never has a contact, and close pairs are not skipped.
 TEST(CollisionPrefilter, SkipsOnlyPairsWithoutContacts) {
-  std::unique_ptr<mjModel, void (*)(mjModel*)> model(load(kScene), mj_deleteModel);
+  std::unique_ptr<mjModel, void (*)(mjModel*)> model(testing::load_model(kScene), mj_deleteModel);
   ASSERT_NE(model, nullptr);
   std::unique_ptr<mjData, void (*)(mjData*)> data(mj_makeData(model.get()), mj_deleteData);
   const CollisionPrefilter filter(model.get());

@@ -10,6 +10,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/lie/so3.hpp"
 #include "graspecmf/sim/grasp_scene.hpp"
+#include "load_model.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -17,21 +18,10 @@ namespace {
 using Vec3 = Eigen::Vector3d;
 using RowMajor = Eigen::Matrix<double, 3, 3, Eigen::RowMajor>;
 
-mjModel* load(const std::string& xml) {
-  mjVFS vfs;
-  mj_defaultVFS(&vfs);
-  mj_makeEmptyFileVFS(&vfs, "s.xml", static_cast<int>(xml.size()));
-  std::memcpy(vfs.filedata[0], xml.data(), xml.size());
-  char error[1000] = "";
-  mjModel* model = mj_loadXML("s.xml", &vfs, error, sizeof(error));
-  mj_deleteVFS(&vfs);
-  return model;
-}
-
 class PadContactNormalsTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    model_.reset(load(grasp_scene_mjcf(testing::box_object(), TrialConfig{})));
+    model_.reset(testing::load_model(grasp_scene_mjcf(testing::box_object(), TrialConfig{})));
     ASSERT_NE(model_, nullptr);
     data_.reset(mj_makeData(model_.get()));
     // The hand at a tilted pose, fingers 3 cm open each.
@@ -116,7 +106,7 @@ TEST_F(PadContactNormalsTest, OnlyContactsWellInsideThePadTakeItsNormal) {
 TEST_F(PadContactNormalsTest, BadArgumentsAreErrors) {
   EXPECT_THROW(PadContactNormals(model_.get(), -0.001), Error);
   std::unique_ptr<mjModel, void (*)(mjModel*)> bare(
-      load("<mujoco><worldbody><geom type='sphere' size='1'/></worldbody></mujoco>"),
+      testing::load_model("<mujoco><worldbody><geom type='sphere' size='1'/></worldbody></mujoco>"),
       mj_deleteModel);
   ASSERT_NE(bare, nullptr);
   EXPECT_THROW(PadContactNormals(bare.get(), 0.003), Error);
