@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 #include <mujoco/mujoco.h>
 
-#include <cstring>
 #include <memory>
 
 #include "graspecmf/core/random.hpp"
