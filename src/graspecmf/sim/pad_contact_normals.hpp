@@ -5,8 +5,6 @@
 // the edge and the squeeze pushes the object out of the hand. A point inside a flat face can only
 // be pushed along the face's normal, so contacts well inside the pad get the pad's normal.
 
-#include <Eigen/Core>
-
 struct mjModel_;
 struct mjData_;
 struct mjContact_;

@@ -24,8 +24,8 @@ struct TrainConfig {
   data::TrainingSamplerOptions data;  // points follows model.encoder.points
   std::int64_t steps = 100000;
   double learning_rate = 1e-4;  // Adam
-  // "constant", or "cosine": the rate falls from learning_rate to 0 at the last step along
-  // half a cosine period.
+  // "constant", or "cosine": the rate falls from learning_rate at step 1 along half a cosine
+  // period, to ≈ learning_rate · 2.5 / steps² at the last step (0 one step later).
   std::string learning_rate_schedule = "constant";
   double weight_decay = 1e-6;
   // Exponential moving average of the weights, updated after every step with decay
