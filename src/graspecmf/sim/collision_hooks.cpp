@@ -5,6 +5,7 @@
 #include <mutex>
 
 #include "graspecmf/sim/collision_prefilter.hpp"
+#include "graspecmf/sim/convex_narrow_phase.hpp"
 #include "graspecmf/sim/pad_contact_normals.hpp"
 
 namespace graspecmf::sim {
@@ -21,7 +22,10 @@ int hooked_collision(const mjModel* m, const mjData* d, mjContact* con, int g1, 
   if (hooked && active_hooks.prefilter != nullptr && active_hooks.prefilter->apart(m, d, g1, g2)) {
     return 0;
   }
-  const int count = narrow_phase[m->geom_type[g1]][m->geom_type[g2]](m, d, con, g1, g2, margin);
+  const int count =
+      hooked && active_hooks.convex != nullptr && active_hooks.convex->handles(m, g1, g2)
+          ? active_hooks.convex->collide(m, d, con, g1, g2, margin)
+          : narrow_phase[m->geom_type[g1]][m->geom_type[g2]](m, d, con, g1, g2, margin);
   if (hooked && active_hooks.pad_normals != nullptr) {
     active_hooks.pad_normals->correct(m, d, con, count, g1, g2);
   }

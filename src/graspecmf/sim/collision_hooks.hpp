@@ -1,18 +1,20 @@
 #pragma once
 // Routes MuJoCo's narrow-phase collision functions (a process-wide table) through per-thread
-// hooks, so that one trial can skip geom pairs and correct the contacts found without touching
-// other models or threads.
+// hooks, so that one trial can skip geom pairs, collide convex pairs its own way and correct the
+// contacts found without touching other models or threads.
 
 struct mjModel_;
 
 namespace graspecmf::sim {
 
 class CollisionPrefilter;
+class ConvexNarrowPhase;
 class PadContactNormals;
 
-// What a thread's narrow phase consults; either pointer may be null.
+// What a thread's narrow phase consults; any pointer may be null.
 struct CollisionHooks {
   const CollisionPrefilter* prefilter = nullptr;   // skips pairs that cannot touch
+  ConvexNarrowPhase* convex = nullptr;             // replaces MuJoCo's for the pairs it handles
   const PadContactNormals* pad_normals = nullptr;  // corrects finger-pad contact normals
 };
 
