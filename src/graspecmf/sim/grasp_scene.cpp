@@ -83,7 +83,7 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
     <flag multiccd="enable"/>
   </option>
   <default><geom solref="{contact_timeconst} 1" solimp="{solimp}"/></default>
-  <size njmax="2000" nconmax="500"/>
+  <size njmax="500" nconmax="100"/>
   <asset>
 {assets}  </asset>
   <worldbody>
