@@ -18,11 +18,14 @@ struct Preset {
   const char* name;
   std::size_t mugs, val, test;
   std::uint64_t seed;
-  double pad_normal_inset;  // the simulator's contact model when the preset was labelled
+  // The simulator's contact model when the preset was labelled.
+  double pad_normal_inset;
+  bool mujoco_convex;
 };
 // mugs-v1: the project's training set (METHOD.md §8): 130 mugs, 100 train / 10 val / 20 test,
-// labelled before the simulator had pad normals (sim::TrialConfig::pad_normal_inset).
-constexpr Preset kPresets[] = {{"mugs-v1", 130, 10, 20, 20261122, -1.0}};
+// labelled before the simulator had pad normals and its own convex collider
+// (sim::TrialConfig::pad_normal_inset, mujoco_convex).
+constexpr Preset kPresets[] = {{"mugs-v1", 130, 10, 20, 20261122, -1.0, true}};
 
 struct MakeDatasetArgs {
   std::string preset, meshes, out, config_file, cache;
@@ -55,6 +58,7 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
     o.val_count = preset->val;
     o.test_count = preset->test;
     o.trial.pad_normal_inset = preset->pad_normal_inset;
+    o.trial.mujoco_convex = preset->mujoco_convex;
   } else if (a.mugs > 0) {
     o.objects = dataset::procedural_mug_sources(a.mugs, a.seed);
   } else {
@@ -105,8 +109,9 @@ void add_make_dataset_command(CLI::App& app) {
   auto a = std::make_shared<MakeDatasetArgs>();
   CLI::App* cmd = app.add_subcommand(
       "make-dataset", "Generate an ACRONYM-style dataset: objects, grasp candidates, sim labels");
-  cmd->add_option("--preset", a->preset,
-                  "Named dataset: mugs-v1 (130 mugs, 100/10/20 split; fixes pad_normal_inset)");
+  cmd->add_option(
+      "--preset", a->preset,
+      "Named dataset: mugs-v1 (130 mugs, 100/10/20 split; fixes pad_normal_inset, mujoco_convex)");
   cmd->add_option("--mugs", a->mugs, "Number of procedural mugs")->check(CLI::Range(1, 100000));
   cmd->add_option("--seed", a->seed, "Seed for mugs, candidates and the split");
   cmd->add_option("--meshes", a->meshes, "Folder of your own .obj/.stl/.ply meshes");

@@ -132,19 +132,24 @@ TEST(MakeDataset, RefusesAFolderMadeWithOtherOptions) {
   EXPECT_THROW(make_dataset(o), Error);
 }
 
-// A manifest written before pad_normal_inset existed resumes as labelled without pad normals, and
-// only as that.
-TEST(MakeDataset, AManifestWithoutPadNormalsResumesAsPadNormalsOff) {
+// A manifest written before pad_normal_inset and mujoco_convex existed resumes as labelled without
+// pad normals and with MuJoCo's convex collider, and only as that.
+TEST(MakeDataset, AManifestWithoutNewerSettingsResumesAsTheOldContactModel) {
   const ScratchDir dir;
   MakeDatasetOptions o = small_mugs(dir / "out", dir / "cache");
   o.objects.resize(1);
   o.trial.pad_normal_inset = -1.0;
+  o.trial.mujoco_convex = true;
   make_dataset(o);
   const fs::path manifest = dir / "out/manifest.json";
   nlohmann::json old = nlohmann::json::parse(read_file(manifest));
   ASSERT_EQ(old["options"]["trial"].erase("pad_normal_inset"), 1u);
+  ASSERT_EQ(old["options"]["trial"].erase("mujoco_convex"), 1u);
   std::ofstream(manifest) << old.dump(1);
   EXPECT_TRUE(make_dataset(o)[0].resumed);
+  o.trial.mujoco_convex = false;
+  EXPECT_THROW(make_dataset(o), Error);
+  o.trial.mujoco_convex = true;
   o.trial.pad_normal_inset = 0.003;
   EXPECT_THROW(make_dataset(o), Error);
 }

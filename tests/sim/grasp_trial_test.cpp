@@ -71,6 +71,10 @@ TEST(TrialConfig, JsonRoundTripAndValidation) {
   EXPECT_EQ(trial_config_from_json(nlohmann::json{{"pad_normal_inset", -1.0}}).pad_normal_inset,
             -1.0);
   EXPECT_THROW(trial_config_from_json(nlohmann::json{{"pad_normal_inset", NAN}}), Error);
+  // Switches are JSON booleans.
+  EXPECT_TRUE(trial_config_from_json(nlohmann::json{{"mujoco_convex", true}}).mujoco_convex);
+  EXPECT_FALSE(trial_config_from_json(to_json(TrialConfig{})).mujoco_convex);
+  EXPECT_THROW(trial_config_from_json(nlohmann::json{{"mujoco_convex", 1}}), Error);
 }
 
 }  // namespace

@@ -124,10 +124,12 @@ void write_manifest(const MakeDatasetOptions& o, const std::vector<ObjectOutcome
 }
 
 // A manifest's options as this version writes them: manifests written before pad_normal_inset
-// existed were labelled with MuJoCo's own contact normals, which that setting calls −1.
+// and mujoco_convex existed were labelled with MuJoCo's own contact normals and convex collider,
+// which those settings call −1 and true.
 json upgraded_options(json options) {
   json& trial = options["trial"];
   if (trial.is_object() && !trial.contains("pad_normal_inset")) trial["pad_normal_inset"] = -1.0;
+  if (trial.is_object() && !trial.contains("mujoco_convex")) trial["mujoco_convex"] = true;
   return options;
 }
 

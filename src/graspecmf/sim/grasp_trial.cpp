@@ -81,7 +81,7 @@ struct GraspSimulator::Impl {
   int object_qpos = -1, hand_qpos = -1, left_qpos = -1, right_qpos = -1;
   int mocap = -1;
   std::unique_ptr<CollisionPrefilter> prefilter;
-  std::unique_ptr<ConvexNarrowPhase> convex;
+  std::unique_ptr<ConvexNarrowPhase> convex;       // null when config.mujoco_convex
   std::unique_ptr<PadContactNormals> pad_normals;  // null when config.pad_normal_inset < 0
 
   int steps(double duration) const {
@@ -155,7 +155,7 @@ GraspSimulator::GraspSimulator(const SceneObject& object, const TrialConfig& con
   s.right_qpos = joint_qpos(kRightFinger);
   s.mocap = s.model->body_mocapid[body(kTargetBody)];
   s.prefilter = std::make_unique<CollisionPrefilter>(s.model);
-  s.convex = std::make_unique<ConvexNarrowPhase>(s.model);
+  if (!config.mujoco_convex) s.convex = std::make_unique<ConvexNarrowPhase>(s.model);
   if (config.pad_normal_inset >= 0.0) {
     s.pad_normals = std::make_unique<PadContactNormals>(s.model, config.pad_normal_inset);
   }
@@ -172,7 +172,7 @@ TrialResult GraspSimulator::run(const lie::Pose& grasp) {
   mjModel* m = s.model;
   mjData* d = s.data;
   const CollisionHooksScope hooks(m, {s.prefilter.get(), s.convex.get(), s.pad_normals.get()});
-  s.convex->reset();
+  if (s.convex) s.convex->reset();
   mj_resetData(m, d);
   write_pose(lie::Pose{}, d->qpos + s.object_qpos, d->qpos + s.object_qpos + 3);
   write_pose(grasp, d->qpos + s.hand_qpos, d->qpos + s.hand_qpos + 3);

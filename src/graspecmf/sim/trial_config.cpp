@@ -1,7 +1,9 @@
 #include "graspecmf/sim/trial_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <utility>
 
@@ -49,6 +51,13 @@ constexpr Field kFields[] = {
     {"max_relative_rotation", &TrialConfig::max_relative_rotation, Range::kPositive},
 };
 
+// The switches: JSON name and member (JSON true / false).
+struct Switch {
+  const char* name;
+  bool TrialConfig::*member;
+};
+constexpr Switch kSwitches[] = {{"mujoco_convex", &TrialConfig::mujoco_convex}};
+
 }  // namespace
 
 void validate(const TrialConfig& config) {
@@ -77,6 +86,7 @@ void validate(const TrialConfig& config) {
 nlohmann::json to_json(const TrialConfig& config) {
   nlohmann::json json = nlohmann::json::object();
   for (const Field& field : kFields) json[field.name] = config.*field.member;
+  for (const Switch& s : kSwitches) json[s.name] = config.*s.member;
   return json;
 }
 
@@ -84,6 +94,13 @@ TrialConfig trial_config_from_json(const nlohmann::json& json) {
   if (!json.is_object()) throw Error("trial config: expected a JSON object");
   TrialConfig config;
   for (const auto& [key, value] : json.items()) {
+    const auto* on_off = std::find_if(std::begin(kSwitches), std::end(kSwitches),
+                                      [&](const Switch& s) { return key == s.name; });
+    if (on_off != std::end(kSwitches)) {
+      if (!value.is_boolean()) throw Error("trial config: '" + key + "' must be true or false");
+      config.*(on_off->member) = value.get<bool>();
+      continue;
+    }
     const Field* match = nullptr;
     for (const Field& field : kFields) {
       if (key == field.name) match = &field;

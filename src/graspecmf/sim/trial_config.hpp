@@ -25,6 +25,10 @@ struct TrialConfig {
   // its edges is pushed along the pad's normal (sim/pad_contact_normals.hpp); negative: off, all
   // normals are MuJoCo's.
   double pad_normal_inset = 0.00225;
+  // Convex pairs (mesh–mesh, box–mesh): false, sim::ConvexNarrowPhase (MuJoCo's algorithm, ~1.3×
+  // faster trials, contacts equal up to round-off and the extra contacts' tilt axes); true,
+  // MuJoCo's own function, as datasets labelled before 2026-12-02 were.
+  bool mujoco_convex = false;
   double default_density = 150;  // kg/m³, when the grasp file has no mass (ACRONYM: 150)
   // Hand: a free body welded softly to a moving target, fingers on force-limited slides.
   double hand_mass = 0.73;       // kg, Franka hand
