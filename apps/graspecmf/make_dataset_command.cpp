@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <thread>
 
 #include "graspecmf/core/error.hpp"
@@ -44,7 +45,8 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
   o.density = a.density;
   o.threads = a.threads;
   o.cache = a.cache;
-  o.trial = sim::read_trial_config(a.config_file);
+  const nlohmann::json given = sim::read_trial_config_json(a.config_file);
+  o.trial = sim::trial_config_from_json(given);
   o.candidates.num_grasps = a.grasps;
   if (!a.preset.empty()) {
     const auto* preset = std::find_if(std::begin(kPresets), std::end(kPresets),
@@ -57,6 +59,12 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
     o.objects = dataset::procedural_mug_sources(preset->mugs, preset->seed);
     o.val_count = preset->val;
     o.test_count = preset->test;
+    for (const char* fixed : {"pad_normal_inset", "mujoco_convex"}) {
+      if (given.is_object() && given.contains(fixed)) {
+        throw Error(std::string("make-dataset: --preset ") + preset->name + " fixes " + fixed +
+                    " (the contact model it was labelled with); remove it from --config");
+      }
+    }
     o.trial.pad_normal_inset = preset->pad_normal_inset;
     o.trial.mujoco_convex = preset->mujoco_convex;
   } else if (a.mugs > 0) {

@@ -216,6 +216,11 @@ TEST(CliMakeDataset, BadInput) {
                         "cannot create the output folder");
   expect_one_error_line(run("make-dataset --preset mugs-v9 --out " + (dir / "a").string(), dir),
                         "unknown preset");
+  graspecmf::testing::write_file(dir / "inset.json", R"({"pad_normal_inset": 0.003})");
+  expect_one_error_line(run("make-dataset --preset mugs-v1 --config " +
+                                (dir / "inset.json").string() + " --out " + (dir / "e").string(),
+                            dir),
+                        "mugs-v1 fixes pad_normal_inset");
   expect_one_error_line(run("make-dataset --mugs 2 --meshes " + dir.path().string() + " --out " +
                                 (dir / "b").string(),
                             dir),

@@ -113,15 +113,19 @@ TrialConfig trial_config_from_json(const nlohmann::json& json) {
   return config;
 }
 
-TrialConfig read_trial_config(const std::string& path) {
-  if (path.empty()) return {};
+nlohmann::json read_trial_config_json(const std::string& path) {
+  if (path.empty()) return nlohmann::json::object();
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open trial config");
   try {
-    return trial_config_from_json(nlohmann::json::parse(in));
+    return nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& e) {
     throw Error(path + ": not valid JSON (" + e.what() + ")");
   }
+}
+
+TrialConfig read_trial_config(const std::string& path) {
+  return trial_config_from_json(read_trial_config_json(path));
 }
 
 }  // namespace graspecmf::sim
