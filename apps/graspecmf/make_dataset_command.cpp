@@ -19,14 +19,14 @@ struct Preset {
   const char* name;
   std::size_t mugs, val, test;
   std::uint64_t seed;
-  // The simulator's contact model when the preset was labelled.
-  double pad_normal_inset;
-  bool mujoco_convex;
+  // The trial settings (sim::TrialConfig JSON) that give the contact model the preset was
+  // labelled with; a --config may not set them.
+  const char* fixed_trial;
 };
 // mugs-v1: the project's training set (METHOD.md §8): 130 mugs, 100 train / 10 val / 20 test,
-// labelled before the simulator had pad normals and its own convex collider
-// (sim::TrialConfig::pad_normal_inset, mujoco_convex).
-constexpr Preset kPresets[] = {{"mugs-v1", 130, 10, 20, 20261122, -1.0, true}};
+// labelled before the simulator had pad normals and its own convex collider.
+constexpr Preset kPresets[] = {
+    {"mugs-v1", 130, 10, 20, 20261122, R"({"pad_normal_inset": -1.0, "mujoco_convex": true})"}};
 
 struct MakeDatasetArgs {
   std::string preset, meshes, out, config_file, cache;
@@ -45,8 +45,8 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
   o.density = a.density;
   o.threads = a.threads;
   o.cache = a.cache;
-  const nlohmann::json given = sim::read_trial_config_json(a.config_file);
-  o.trial = sim::trial_config_from_json(given);
+  nlohmann::json trial = sim::read_trial_config_json(a.config_file);
+  o.trial = sim::trial_config_from_json(trial);
   o.candidates.num_grasps = a.grasps;
   if (!a.preset.empty()) {
     const auto* preset = std::find_if(std::begin(kPresets), std::end(kPresets),
@@ -59,14 +59,15 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
     o.objects = dataset::procedural_mug_sources(preset->mugs, preset->seed);
     o.val_count = preset->val;
     o.test_count = preset->test;
-    for (const char* fixed : {"pad_normal_inset", "mujoco_convex"}) {
-      if (given.is_object() && given.contains(fixed)) {
-        throw Error(std::string("make-dataset: --preset ") + preset->name + " fixes " + fixed +
+    const nlohmann::json fixed = nlohmann::json::parse(preset->fixed_trial);
+    for (const auto& [key, value] : fixed.items()) {
+      if (trial.contains(key)) {
+        throw Error(std::string("make-dataset: --preset ") + preset->name + " fixes " + key +
                     " (the contact model it was labelled with); remove it from --config");
       }
+      trial[key] = value;
     }
-    o.trial.pad_normal_inset = preset->pad_normal_inset;
-    o.trial.mujoco_convex = preset->mujoco_convex;
+    o.trial = sim::trial_config_from_json(trial);
   } else if (a.mugs > 0) {
     o.objects = dataset::procedural_mug_sources(a.mugs, a.seed);
   } else {

@@ -221,6 +221,11 @@ TEST(CliMakeDataset, BadInput) {
                                 (dir / "inset.json").string() + " --out " + (dir / "e").string(),
                             dir),
                         "mugs-v1 fixes pad_normal_inset");
+  // Without --config the preset's own settings apply and the run reaches the output folder.
+  fs::create_directories(dir / "f");
+  graspecmf::testing::write_file(dir / "f/manifest.json", R"({"options": {}})");
+  expect_one_error_line(run("make-dataset --preset mugs-v1 --out " + (dir / "f").string(), dir),
+                        "made with other options");
   expect_one_error_line(run("make-dataset --mugs 2 --meshes " + dir.path().string() + " --out " +
                                 (dir / "b").string(),
                             dir),

@@ -19,7 +19,8 @@ class ConvexNarrowPhase {
   explicit ConvexNarrowPhase(const mjModel_* model);
   ~ConvexNarrowPhase();
 
-  // True if both geoms were prepared, so collide() can take the pair.
+  // True if both geoms were prepared and one is a mesh, so collide() can take the pair (box–box
+  // pairs keep MuJoCo's box collider).
   bool handles(const mjModel_* model, int g1, int g2) const;
 
   // Writes up to 5 contacts of pair (g1, g2) (normal from g1 to g2, MuJoCo's conventions) and
