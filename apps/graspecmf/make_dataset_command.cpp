@@ -17,21 +17,26 @@ namespace {
 
 struct Preset {
   const char* name;
-  std::size_t mugs, val, test;
+  std::size_t mugs, val, test, grasps;
   std::uint64_t seed;
   // The trial settings (sim::TrialConfig JSON) that give the contact model the preset was
   // labelled with; a --config may not set them.
   const char* fixed_trial;
 };
-// mugs-v1: the project's training set (METHOD.md §8): 130 mugs, 100 train / 10 val / 20 test,
-// labelled before the simulator had pad normals and its own convex collider.
-constexpr Preset kPresets[] = {
-    {"mugs-v1", 130, 10, 20, 20261122, R"({"pad_normal_inset": -1.0, "mujoco_convex": true})"}};
+// mugs-v1: the project's first training set (METHOD.md §8): 130 mugs × 2000 candidates, 100 train /
+// 10 val / 20 test, labelled before the simulator had pad normals and its own convex collider.
+// mugs-v2: the same labelling budget spread over twice the shapes (200 mugs × 1000 candidates,
+// 150 / 20 / 30), labelled by the current simulator.
+constexpr Preset kPresets[] = {{"mugs-v1", 130, 10, 20, 2000, 20261122,
+                                R"({"pad_normal_inset": -1.0, "mujoco_convex": true})"},
+                               {"mugs-v2", 200, 20, 30, 1000, 20261202, "{}"}};
+constexpr const char* kPresetNames = "mugs-v1, mugs-v2";
 
 struct MakeDatasetArgs {
   std::string preset, meshes, out, config_file, cache;
   std::size_t mugs = 0, grasps = 2000;
   std::uint64_t seed = 0;
+  bool grasps_given = false, seed_given = false;
   double scale = 1.0, density = 150.0;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
@@ -52,8 +57,13 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
     const auto* preset = std::find_if(std::begin(kPresets), std::end(kPresets),
                                       [&](const Preset& p) { return a.preset == p.name; });
     if (preset == std::end(kPresets)) {
-      throw Error("make-dataset: unknown preset '" + a.preset + "' (known: mugs-v1)");
+      throw Error("make-dataset: unknown preset '" + a.preset + "' (known: " + kPresetNames + ")");
     }
+    if (a.grasps_given || a.seed_given) {
+      throw Error(std::string("make-dataset: --preset ") + preset->name +
+                  " fixes the candidates per object and the seed; remove --grasps and --seed");
+    }
+    o.candidates.num_grasps = preset->grasps;
     o.preset = preset->name;
     o.seed = preset->seed;
     o.objects = dataset::procedural_mug_sources(preset->mugs, preset->seed);
@@ -120,21 +130,28 @@ void add_make_dataset_command(CLI::App& app) {
       "make-dataset", "Generate an ACRONYM-style dataset: objects, grasp candidates, sim labels");
   cmd->add_option(
       "--preset", a->preset,
-      "Named dataset: mugs-v1 (130 mugs, 100/10/20 split; fixes pad_normal_inset, mujoco_convex)");
+      "Named dataset: mugs-v1 (130 mugs × 2000 candidates, 100/10/20 split, legacy contact "
+      "model) or mugs-v2 (200 mugs × 1000 candidates, 150/20/30 split, current simulator)");
   cmd->add_option("--mugs", a->mugs, "Number of procedural mugs")->check(CLI::Range(1, 100000));
-  cmd->add_option("--seed", a->seed, "Seed for mugs, candidates and the split");
+  CLI::Option* seed = cmd->add_option("--seed", a->seed, "Seed for mugs, candidates and the split");
   cmd->add_option("--meshes", a->meshes, "Folder of your own .obj/.stl/.ply meshes");
   cmd->add_option("--scale", a->scale, "Mesh units to metres for --meshes")
       ->check(CLI::PositiveNumber);
   cmd->add_option("--density", a->density, "Object density, kg/m³ (ACRONYM: 150)")
       ->check(CLI::PositiveNumber);
-  cmd->add_option("--grasps", a->grasps, "Candidates per object")->check(CLI::Range(1, 1000000));
+  CLI::Option* grasps =
+      cmd->add_option("--grasps", a->grasps, "Candidates per object (default 2000)")
+          ->check(CLI::Range(1, 1000000));
   cmd->add_option("--threads", a->threads, "Worker threads")->check(CLI::Range(1, 256));
   cmd->add_option("--out", a->out, "Output folder (resumed if it holds the same dataset)")
       ->required();
   cmd->add_option("--config", a->config_file, "Trial parameters (JSON; defaults for missing keys)");
   cmd->add_option("--cache", a->cache, "Convex-decomposition cache folder");
-  cmd->callback([a] { run(*a); });
+  cmd->callback([a, seed, grasps] {
+    a->seed_given = seed->count() > 0;
+    a->grasps_given = grasps->count() > 0;
+    run(*a);
+  });
 }
 
 }  // namespace graspecmf::apps

@@ -211,7 +211,8 @@ void run_evaluate(const EvaluateArgs& a) {
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
   double total = 0, total_random = 0, total_nearest = 0, total_floor = 0;
-  std::size_t floors = 0;  // objects with a sampling floor (≥ 2n successful grasps)
+  std::size_t floors = 0;         // objects with a sampling floor (≥ 2n successful grasps)
+  std::size_t below_nearest = 0;  // objects where the model beats the nearest training object
   std::string table =
       a.baselines ? "| object | n | EMD (3 rotations) | mean | random | nearest training object | "
                     "floor |\n|---|---|---|---|---|---|---|\n"
@@ -229,11 +230,14 @@ void run_evaluate(const EvaluateArgs& a) {
       entry["random_emd"] = b.random_emd;
       entry["nearest_training_object"] = b.nearest;
       entry["nearest_emd"] = b.nearest_emd;
+      entry["nearest_n"] = b.nearest_n;
       entry["floor_emd"] = b.floor_emd ? json(*b.floor_emd) : json(nullptr);
-      table += fmt::format(" {:.4f} | {:.4f} ({}) | {} |", b.random_emd, b.nearest_emd, b.nearest,
+      table += fmt::format(" {:.4f} | {:.4f} ({}{}) | {} |", b.random_emd, b.nearest_emd, b.nearest,
+                           b.nearest_n < e.n ? fmt::format(", n = {}", b.nearest_n) : "",
                            b.floor_emd ? fmt::format("{:.4f}", *b.floor_emd) : "n/a");
       total_random += b.random_emd;
       total_nearest += b.nearest_emd;
+      below_nearest += e.mean_emd < b.nearest_emd;
       if (b.floor_emd) {
         total_floor += *b.floor_emd;
         ++floors;
@@ -259,8 +263,11 @@ void run_evaluate(const EvaluateArgs& a) {
   if (a.baselines) {
     report["mean_random_emd"] = total_random / count;
     report["mean_nearest_emd"] = total_nearest / count;
-    summary += fmt::format(" (random grasps {:.4f}, nearest training object {:.4f})",
-                           total_random / count, total_nearest / count);
+    report["objects_below_nearest"] = below_nearest;
+    summary += fmt::format(
+        " (random grasps {:.4f}, nearest training object {:.4f}; the model is below the nearest "
+        "object on {} of {})",
+        total_random / count, total_nearest / count, below_nearest, objects.size());
     if (floors == objects.size()) {
       report["mean_floor_emd"] = total_floor / count;
       summary += fmt::format("; sampling floor {:.4f}", total_floor / count);

@@ -221,11 +221,20 @@ TEST(CliMakeDataset, BadInput) {
                                 (dir / "inset.json").string() + " --out " + (dir / "e").string(),
                             dir),
                         "mugs-v1 fixes pad_normal_inset");
+  expect_one_error_line(
+      run("make-dataset --preset mugs-v2 --grasps 10 --out " + (dir / "e").string(), dir),
+      "mugs-v2 fixes the candidates per object and the seed");
+  expect_one_error_line(
+      run("make-dataset --preset mugs-v1 --seed 3 --out " + (dir / "e").string(), dir),
+      "mugs-v1 fixes the candidates per object and the seed");
   // Without --config the preset's own settings apply and the run reaches the output folder.
   fs::create_directories(dir / "f");
   graspecmf::testing::write_file(dir / "f/manifest.json", R"({"options": {}})");
-  expect_one_error_line(run("make-dataset --preset mugs-v1 --out " + (dir / "f").string(), dir),
-                        "made with other options");
+  for (const char* preset : {"mugs-v1", "mugs-v2"}) {
+    expect_one_error_line(
+        run(std::string("make-dataset --preset ") + preset + " --out " + (dir / "f").string(), dir),
+        "made with other options");
+  }
   expect_one_error_line(run("make-dataset --mugs 2 --meshes " + dir.path().string() + " --out " +
                                 (dir / "b").string(),
                             dir),

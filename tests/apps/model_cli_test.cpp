@@ -54,12 +54,18 @@ TEST(CliModel, TrainSampleEvaluate) {
   ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
   EXPECT_NE(evaluated.out.find("mean EMD over 1 objects"), std::string::npos) << evaluated.out;
   EXPECT_NE(evaluated.out.find("nearest training object"), std::string::npos) << evaluated.out;
+  EXPECT_NE(evaluated.out.find("below the nearest object on"), std::string::npos) << evaluated.out;
   // The report records the sampling settings used, and the sampling floor (120 ≥ 2 × 4 grasps).
   const nlohmann::json report = nlohmann::json::parse(read_file(dir / "report.json"));
   EXPECT_EQ(report["sampling"]["solver"], "euler");
   EXPECT_EQ(report["sampling"]["steps"], 3);
   EXPECT_EQ(report["sampling"]["guidance"], 1.5);
   EXPECT_TRUE(report["objects"][0]["floor_emd"].is_number());
+  // The win count agrees with the per-object numbers; the nearest object compared all 4 grasps.
+  const nlohmann::json& object = report["objects"][0];
+  EXPECT_EQ(report["objects_below_nearest"].get<int>(),
+            object["mean_emd"].get<double>() < object["nearest_emd"].get<double>() ? 1 : 0);
+  EXPECT_EQ(object["nearest_n"], 4);
 }
 
 TEST(CliModel, BadInput) {

@@ -253,6 +253,7 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   const BaselineEvaluation b = evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 50, 7);
   EXPECT_EQ(b.nearest, boxes[1].name);
   EXPECT_EQ(b.n, 50u);
+  EXPECT_EQ(b.nearest_n, 50u);
   EXPECT_GT(b.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
   // 120 successful grasps hold two disjoint draws of 50 (a floor) but not of 61.
   ASSERT_TRUE(b.floor_emd.has_value());

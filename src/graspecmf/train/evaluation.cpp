@@ -123,6 +123,7 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   std::vector<lie::Pose> moved = reference_grasps(nearest, result.n, seed);
   for (lie::Pose& g : moved) g.p += centroid - neighbour_centroid;
   const std::size_t m = std::min(moved.size(), reference.size());
+  result.nearest_n = m;
   result.nearest_emd = metrics::earth_movers_distance(
       std::vector<lie::Pose>(moved.begin(), moved.begin() + static_cast<std::ptrdiff_t>(m)),
       std::vector<lie::Pose>(reference.begin(),

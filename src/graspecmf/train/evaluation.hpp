@@ -34,10 +34,11 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
                                  const SamplingSettings& settings, std::uint64_t seed);
 
 struct BaselineEvaluation {
-  std::size_t n = 0;         // grasps compared
-  double random_emd = 0.0;   // uniformly random grasps around the object
-  std::string nearest;       // the training object closest in shape
-  double nearest_emd = 0.0;  // its successful grasps, moved to this object's centroid
+  std::size_t n = 0;          // grasps compared
+  double random_emd = 0.0;    // uniformly random grasps around the object
+  std::string nearest;        // the training object closest in shape
+  double nearest_emd = 0.0;   // its successful grasps, moved to this object's centroid
+  std::size_t nearest_n = 0;  // grasps in that comparison: n, or fewer if it has fewer than n
   // The sampling floor: the reference against the next n of the same shuffle (the object's own
   // grasps), when the object has at least 2n successful grasps.
   std::optional<double> floor_emd;
