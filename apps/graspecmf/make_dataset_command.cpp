@@ -1,12 +1,14 @@
 #include "make_dataset_command.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <vector>
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/progress.hpp"
@@ -30,7 +32,6 @@ struct Preset {
 constexpr Preset kPresets[] = {{"mugs-v1", 130, 10, 20, 2000, 20261122,
                                 R"({"pad_normal_inset": -1.0, "mujoco_convex": true})"},
                                {"mugs-v2", 200, 20, 30, 1000, 20261202, "{}"}};
-constexpr const char* kPresetNames = "mugs-v1, mugs-v2";
 
 struct MakeDatasetArgs {
   std::string preset, meshes, out, config_file, cache;
@@ -51,13 +52,15 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
   o.threads = a.threads;
   o.cache = a.cache;
   nlohmann::json trial = sim::read_trial_config_json(a.config_file);
-  o.trial = sim::trial_config_from_json(trial);
   o.candidates.num_grasps = a.grasps;
   if (!a.preset.empty()) {
     const auto* preset = std::find_if(std::begin(kPresets), std::end(kPresets),
                                       [&](const Preset& p) { return a.preset == p.name; });
     if (preset == std::end(kPresets)) {
-      throw Error("make-dataset: unknown preset '" + a.preset + "' (known: " + kPresetNames + ")");
+      std::vector<std::string> known;
+      for (const Preset& p : kPresets) known.emplace_back(p.name);
+      throw Error("make-dataset: unknown preset '" + a.preset +
+                  "' (known: " + fmt::format("{}", fmt::join(known, ", ")) + ")");
     }
     if (a.grasps_given || a.seed_given) {
       throw Error(std::string("make-dataset: --preset ") + preset->name +
@@ -77,12 +80,12 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
       }
       trial[key] = value;
     }
-    o.trial = sim::trial_config_from_json(trial);
   } else if (a.mugs > 0) {
     o.objects = dataset::procedural_mug_sources(a.mugs, a.seed);
   } else {
     o.objects = dataset::mesh_folder_sources(a.meshes, a.scale);
   }
+  o.trial = sim::trial_config_from_json(trial);
   return o;
 }
 

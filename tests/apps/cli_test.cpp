@@ -221,6 +221,11 @@ TEST(CliMakeDataset, BadInput) {
                                 (dir / "inset.json").string() + " --out " + (dir / "e").string(),
                             dir),
                         "mugs-v1 fixes pad_normal_inset");
+  graspecmf::testing::write_file(dir / "list.json", "[1]");
+  expect_one_error_line(run("make-dataset --preset mugs-v1 --config " +
+                                (dir / "list.json").string() + " --out " + (dir / "e").string(),
+                            dir),
+                        "a trial config must be a JSON object");
   expect_one_error_line(
       run("make-dataset --preset mugs-v2 --grasps 10 --out " + (dir / "e").string(), dir),
       "mugs-v2 fixes the candidates per object and the seed");

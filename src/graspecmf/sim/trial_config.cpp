@@ -117,11 +117,14 @@ nlohmann::json read_trial_config_json(const std::string& path) {
   if (path.empty()) return nlohmann::json::object();
   std::ifstream in(path);
   if (!in) throw Error(path + ": cannot open trial config");
+  nlohmann::json json;
   try {
-    return nlohmann::json::parse(in);
+    json = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& e) {
     throw Error(path + ": not valid JSON (" + e.what() + ")");
   }
+  if (!json.is_object()) throw Error(path + ": a trial config must be a JSON object");
+  return json;
 }
 
 TrialConfig read_trial_config(const std::string& path) {

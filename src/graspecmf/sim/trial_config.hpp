@@ -58,7 +58,7 @@ nlohmann::json to_json(const TrialConfig& config);
 // Reads a config (missing keys keep their defaults; unknown keys are an Error).
 TrialConfig trial_config_from_json(const nlohmann::json& json);
 // A config file's JSON object, not yet applied; an empty path gives {}. Throws Error naming the
-// file if it cannot be read or parsed.
+// file if it cannot be read or parsed, or is not an object.
 nlohmann::json read_trial_config_json(const std::string& path);
 // Reads a config file (JSON, as trial_config_from_json); an empty path gives the defaults.
 TrialConfig read_trial_config(const std::string& path);
