@@ -7,6 +7,7 @@
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/heap_retention.hpp"
 #include "graspecmf/core/version.hpp"
 #include "inspect_command.hpp"
 #include "make_dataset_command.hpp"
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   if (argc > 1 && (std::strcmp(argv[1], "train") == 0 || std::strcmp(argv[1], "sample") == 0 ||
                    std::strcmp(argv[1], "evaluate") == 0)) {
     graspecmf::apps::prefer_fast_blas_kernels(argv);
+    graspecmf::retain_freed_memory();
   }
 #endif
   CLI::App app("graspecmf: SO(3)-equivariant 6-DoF grasp generation (GraspECMF)", "graspecmf");
