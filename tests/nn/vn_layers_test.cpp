@@ -24,6 +24,19 @@ using graspecmf::testing::rotate;
 using VnLayersTest = NnTest;
 using KnnTest = NnTest;
 
+// METHOD.md §2's VN-LeakyReLU written with tensor operations, vectors along the last axis of
+// [..., C, 3]; d has q's channels or one (broadcast). The fused layer must match it.
+torch::Tensor reference_leaky_relu(const torch::Tensor& q, const torch::Tensor& d, double slope) {
+  const auto dot = (q * d).sum(-1, true);
+  const auto coefficient = dot.clamp_max(0.0) / ((d * d).sum(-1, true) + 1e-6) * (1.0 - slope);
+  return q - coefficient * d;
+}
+
+// Packs q [R, C, 3] and d [R, D, 3] channels last, [R, 3, C + D], as vn_leaky_relu_packed wants.
+torch::Tensor pack(const torch::Tensor& q, const torch::Tensor& d) {
+  return torch::cat({q, d}, 1).transpose(1, 2).contiguous();
+}
+
 TEST_F(VnLayersTest, VNLinearIsEquivariant) {
   VNLinear layer(7, 5);
   const auto v = torch::randn({4, 16, 7, 3});
@@ -49,7 +62,7 @@ TEST_F(VnLayersTest, LeakyReLUKeepsThePositiveHalfSpaceAndShrinksTheOther) {
   const auto q = torch::randn({200, 4, 3});
   const auto d = torch::randn({200, 4, 3});
   const double slope = 0.2;
-  const auto out = vn_leaky_relu(q, d, slope);
+  const auto out = vn_leaky_relu_packed(pack(q, d), 4, slope).transpose(1, 2);
   const auto dot = (q * d).sum(-1);
   const auto out_dot = (out * d).sum(-1);
   const auto positive = dot >= 0;
@@ -71,8 +84,28 @@ TEST_F(VnLayersTest, SharedDirectionBroadcastsOneVector) {
   EXPECT_EQ(layer->direction->weight.sizes(), (std::vector<int64_t>{1, 5}));
   const auto v = torch::randn({3, 5, 3});
   const auto q = layer->feature(v);
-  const auto d = layer->direction(v).expand_as(q);
-  EXPECT_TRUE(torch::allclose(layer(v), vn_leaky_relu(q, d, layer->slope), 1e-5, 1e-6));
+  const auto d = layer->direction(v);
+  EXPECT_TRUE(torch::allclose(layer(v), reference_leaky_relu(q, d, layer->slope), 1e-5, 1e-6));
+}
+
+TEST_F(VnLayersTest, PackedLeakyReLUMatchesTheReferenceAndItsGradients) {
+  for (const int64_t directions : {int64_t{7}, int64_t{1}}) {
+    const auto q = torch::randn({50, 7, 3}, torch::requires_grad());
+    const auto d = torch::randn({50, directions, 3}, torch::requires_grad());
+    const auto upstream = torch::randn({50, 7, 3});
+    const auto expected = reference_leaky_relu(q, d, 0.2);
+    expected.backward(upstream);
+    const auto packed = pack(q.detach(), d.detach()).requires_grad_();
+    const auto out = vn_leaky_relu_packed(packed, 7, 0.2);
+    EXPECT_TRUE(torch::allclose(out.transpose(1, 2), expected, 1e-5, 1e-6)) << directions;
+    out.backward(upstream.transpose(1, 2).contiguous());
+    const auto grad = packed.grad().transpose(1, 2);  // [50, 7 + D, 3]
+    EXPECT_TRUE(torch::allclose(grad.narrow(1, 0, 7), q.grad(), 1e-4, 1e-5)) << directions;
+    EXPECT_TRUE(torch::allclose(grad.narrow(1, 7, directions), d.grad(), 1e-4, 1e-5)) << directions;
+  }
+  EXPECT_THROW(vn_leaky_relu_packed(torch::randn({5, 3, 9}), 4, 0.2), Error);
+  EXPECT_THROW(vn_leaky_relu_packed(torch::randn({5, 2, 8}), 4, 0.2), Error);
+  EXPECT_THROW(vn_leaky_relu_packed(torch::randn({5, 3, 8}, torch::kDouble), 4, 0.2), Error);
 }
 
 TEST_F(VnLayersTest, InitialisationIsUniformInTheFanInBound) {

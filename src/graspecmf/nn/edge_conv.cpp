@@ -10,26 +10,11 @@
 #include <vector>
 
 #include "graspecmf/nn/checks.hpp"
+#include "graspecmf/nn/vn_leaky_relu_math.hpp"
 
 namespace graspecmf::nn {
 
 namespace {
-
-constexpr float kDirectionEpsilon = 1e-6f;
-
-// Channel c of an edge touches only entries c of its rows, so the channel loops carry no
-// dependence; GCC cannot see it through the runtime row strides and would not vectorise them.
-// The kernels are also compiled for AVX2 and picked at load time (25 % faster than SSE2 here).
-#if defined(__GNUC__) && !defined(__clang__)
-#define GRASPECMF_CHANNELS_INDEPENDENT _Pragma("GCC ivdep")
-#else
-#define GRASPECMF_CHANNELS_INDEPENDENT
-#endif
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define GRASPECMF_KERNEL __attribute__((target_clones("avx2", "default")))
-#else
-#define GRASPECMF_KERNEL
-#endif
 
 // Per point, per_point holds 3 axis rows of 4C floats: [A_f V | B_f V | A_d V | B_d V]. For the
 // edge (i, j), q = A_f V_j + B_f V_i and d = A_d V_j + B_d V_i.
@@ -53,9 +38,7 @@ GRASPECMF_KERNEL void add_edge_response(const EdgeLayout& layout, const float* _
     const float dx = pj[2 * c_count + c] + pi[3 * c_count + c];
     const float dy = pj[r + 2 * c_count + c] + pi[r + 3 * c_count + c];
     const float dz = pj[2 * r + 2 * c_count + c] + pi[2 * r + 3 * c_count + c];
-    const float dot = qx * dx + qy * dy + qz * dz;
-    const float norm2 = dx * dx + dy * dy + dz * dz + kDirectionEpsilon;
-    const float coefficient = beta * std::min(dot, 0.0f) / norm2;  // branch-free: vectorises
+    const float coefficient = detail::leaky_coefficient(qx, qy, qz, dx, dy, dz, beta);
     acc[c] += qx - coefficient * dx;
     acc[c_count + c] += qy - coefficient * dy;
     acc[2 * c_count + c] += qz - coefficient * dz;
@@ -78,34 +61,20 @@ GRASPECMF_KERNEL void add_edge_gradient(const EdgeLayout& layout, int64_t c0, in
     const float dx = pj[2 * c_count + c] + pi[3 * c_count + c];
     const float dy = pj[r + 2 * c_count + c] + pi[r + 3 * c_count + c];
     const float dz = pj[2 * r + 2 * c_count + c] + pi[2 * r + 3 * c_count + c];
-    const float gx = grad[c];
-    const float gy = grad[c_count + c];
-    const float gz = grad[2 * c_count + c];
-    const float dot = qx * dx + qy * dy + qz * dz;
-    const float inv_norm2 = 1.0f / (dx * dx + dy * dy + dz * dz + kDirectionEpsilon);
-    // out = q − w·s·d with s = ⟨q,d⟩/(‖d‖²+ε) and w = β where ⟨q,d⟩ < 0, else 0.
-    const float w = dot < 0.0f ? beta : 0.0f;
-    const float s = dot * inv_norm2;
-    const float gd_n = (gx * dx + gy * dy + gz * dz) * inv_norm2;  // ⟨g,d⟩/(‖d‖²+ε)
-    // ∂/∂q = g − w⟨g,d⟩/n·d;  ∂/∂d = −w(s·g + ⟨g,d⟩/n·q − 2s⟨g,d⟩/n·d).
-    const float gqx = gx - w * gd_n * dx;
-    const float gqy = gy - w * gd_n * dy;
-    const float gqz = gz - w * gd_n * dz;
-    const float gdx = -w * (s * gx + gd_n * qx - 2.0f * s * gd_n * dx);
-    const float gdy = -w * (s * gy + gd_n * qy - 2.0f * s * gd_n * dy);
-    const float gdz = -w * (s * gz + gd_n * qz - 2.0f * s * gd_n * dz);
-    gj[c] += gqx;
-    gj[r + c] += gqy;
-    gj[2 * r + c] += gqz;
-    gi[c_count + c] += gqx;
-    gi[r + c_count + c] += gqy;
-    gi[2 * r + c_count + c] += gqz;
-    gj[2 * c_count + c] += gdx;
-    gj[r + 2 * c_count + c] += gdy;
-    gj[2 * r + 2 * c_count + c] += gdz;
-    gi[3 * c_count + c] += gdx;
-    gi[r + 3 * c_count + c] += gdy;
-    gi[2 * r + 3 * c_count + c] += gdz;
+    const detail::LeakyGradient g = detail::leaky_gradient(
+        qx, qy, qz, dx, dy, dz, grad[c], grad[c_count + c], grad[2 * c_count + c], beta);
+    gj[c] += g.qx;
+    gj[r + c] += g.qy;
+    gj[2 * r + c] += g.qz;
+    gi[c_count + c] += g.qx;
+    gi[r + c_count + c] += g.qy;
+    gi[2 * r + c_count + c] += g.qz;
+    gj[2 * c_count + c] += g.dx;
+    gj[r + 2 * c_count + c] += g.dy;
+    gj[2 * r + 2 * c_count + c] += g.dz;
+    gi[3 * c_count + c] += g.dx;
+    gi[r + 3 * c_count + c] += g.dy;
+    gi[2 * r + 3 * c_count + c] += g.dz;
   }
 }
 

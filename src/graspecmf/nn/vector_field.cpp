@@ -76,9 +76,7 @@ Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
   const auto time_weights = torch::cat({first.feature->weight.select(1, zc + kPoseVectors),
                                         first.direction->weight.select(1, zc + kPoseVectors)});
   const auto both = terms.narrow(2, 1, 2 * hidden) + lifted * time_weights;
-  auto h = vn_leaky_relu(both.narrow(2, 0, hidden), both.narrow(2, hidden, hidden), first.slope,
-                         /*vector_dim=*/1)
-               .transpose(1, 2);
+  auto h = vn_leaky_relu_packed(both, hidden, first.slope).transpose(1, 2);
   for (std::size_t l = 1; l < layers.size(); ++l) h = layers[l]->forward(h);
   const auto velocity = out->forward(h);  // [G, 2, 3]
   return {velocity.select(1, 0), velocity.select(1, 1)};

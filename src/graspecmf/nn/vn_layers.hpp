@@ -23,16 +23,16 @@ class VNLinearImpl : public torch::nn::Module {
 };
 TORCH_MODULE(VNLinear);
 
-// VN-LeakyReLU of features q with directions d: q − (1−slope)·min(⟨q,d⟩,0)/(‖d‖²+1e-6)·d, the
-// inner products taken along `vector_dim` (size 3). d has q's channels or one shared channel
-// (broadcast). No shape checks: the layers below call it on shapes they have checked.
-torch::Tensor vn_leaky_relu(const torch::Tensor& q, const torch::Tensor& d, double slope,
-                            int64_t vector_dim = -1);
+// VN-LeakyReLU, channels last: packed [..., 3, C + D] holds the features q in its first C
+// columns and their directions d in the last D (= C, or 1 shared by all channels); returns
+// [..., 3, C], q − (1−slope)·min(⟨q,d⟩,0)/(‖d‖²+1e-6)·d. One fused pass forward and backward
+// (first-order gradients). Throws Error unless packed is float32 [..., 3, C + C or C + 1].
+torch::Tensor vn_leaky_relu_packed(const torch::Tensor& packed, int64_t channels, double slope);
 
 // Mean of a VN feature over a non-vector axis `dim` (neighbours, points): equivariant pooling.
 torch::Tensor vn_mean_pool(const torch::Tensor& v, int64_t dim);
 
-// VN-Linear + VN-LeakyReLU: q = W_f V and d = W_d V both from the input V, then vn_leaky_relu.
+// VN-Linear + VN-LeakyReLU: q = W_f V and d = W_d V both from the input V, then VN-LeakyReLU.
 // [..., in, 3] → [..., out, 3]; d has `out` channels, or one when `shared_direction`.
 class VNLinearLeakyReLUImpl : public torch::nn::Module {
  public:
