@@ -9,6 +9,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <vector>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
@@ -20,6 +21,7 @@
 #include "graspecmf/geometry/point_cloud_io.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
 #include "graspecmf/gripper/panda.hpp"
+#include "graspecmf/metrics/paired_comparison.hpp"
 #include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
@@ -211,8 +213,8 @@ void run_evaluate(const EvaluateArgs& a) {
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
   double total = 0, total_random = 0, total_nearest = 0, total_floor = 0;
-  std::size_t floors = 0;         // objects with a sampling floor (≥ 2n successful grasps)
-  std::size_t below_nearest = 0;  // objects where the model beats the nearest training object
+  std::size_t floors = 0;  // objects with a sampling floor (≥ 2n successful grasps)
+  std::vector<double> model_emds, nearest_emds;
   std::string table =
       a.baselines ? "| object | n | EMD (3 rotations) | mean | random | nearest training object | "
                     "floor |\n|---|---|---|---|---|---|---|\n"
@@ -237,7 +239,8 @@ void run_evaluate(const EvaluateArgs& a) {
                            b.floor_emd ? fmt::format("{:.4f}", *b.floor_emd) : "n/a");
       total_random += b.random_emd;
       total_nearest += b.nearest_emd;
-      below_nearest += e.mean_emd < b.nearest_emd;
+      model_emds.push_back(e.mean_emd);
+      nearest_emds.push_back(b.nearest_emd);
       if (b.floor_emd) {
         total_floor += *b.floor_emd;
         ++floors;
@@ -263,11 +266,19 @@ void run_evaluate(const EvaluateArgs& a) {
   if (a.baselines) {
     report["mean_random_emd"] = total_random / count;
     report["mean_nearest_emd"] = total_nearest / count;
-    report["objects_below_nearest"] = below_nearest;
+    const metrics::PairedComparison c = metrics::compare_paired(model_emds, nearest_emds, a.seed);
+    report["objects_below_nearest"] = c.wins;
+    report["nearest_comparison"] = {{"wins", c.wins},
+                                    {"losses", c.losses},
+                                    {"sign_test_p", c.sign_test_p},
+                                    {"mean_difference", c.mean_difference},
+                                    {"ci_95", {c.ci_low, c.ci_high}}};
     summary += fmt::format(
         " (random grasps {:.4f}, nearest training object {:.4f}; the model is below the nearest "
-        "object on {} of {})",
-        total_random / count, total_nearest / count, below_nearest, objects.size());
+        "object on {} of {}, sign test p = {:.3g}; nearest minus model: mean {:+.4f}, 95 % "
+        "bootstrap interval [{:+.4f}, {:+.4f}])",
+        total_random / count, total_nearest / count, c.wins, objects.size(), c.sign_test_p,
+        c.mean_difference, c.ci_low, c.ci_high);
     if (floors == objects.size()) {
       report["mean_floor_emd"] = total_floor / count;
       summary += fmt::format("; sampling floor {:.4f}", total_floor / count);

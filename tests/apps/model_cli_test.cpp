@@ -66,6 +66,15 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_EQ(report["objects_below_nearest"].get<int>(),
             object["mean_emd"].get<double>() < object["nearest_emd"].get<double>() ? 1 : 0);
   EXPECT_EQ(object["nearest_n"], 4);
+  // With one object the paired comparison is that object's difference, without spread.
+  const nlohmann::json& comparison = report["nearest_comparison"];
+  EXPECT_EQ(comparison["wins"], report["objects_below_nearest"]);
+  EXPECT_DOUBLE_EQ(comparison["mean_difference"].get<double>(),
+                   object["nearest_emd"].get<double>() - object["mean_emd"].get<double>());
+  EXPECT_EQ(comparison["ci_95"][0], comparison["mean_difference"]);
+  EXPECT_EQ(comparison["ci_95"][1], comparison["mean_difference"]);
+  EXPECT_EQ(comparison["sign_test_p"], 1.0);
+  EXPECT_NE(evaluated.out.find("sign test p = 1"), std::string::npos) << evaluated.out;
 }
 
 TEST(CliModel, BadInput) {

@@ -1,0 +1,72 @@
+#include "graspecmf/metrics/paired_comparison.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/core/random.hpp"
+
+namespace graspecmf::metrics {
+
+namespace {
+
+// P(X ≤ k) for X ~ Binomial(m, 1/2), summed in log space so that large m cannot overflow.
+double binomial_half_cdf(std::size_t k, std::size_t m) {
+  const double log_half_m = static_cast<double>(m) * std::log(0.5);
+  const double log_m_factorial = std::lgamma(static_cast<double>(m) + 1.0);
+  double total = 0.0;
+  for (std::size_t i = 0; i <= k; ++i) {
+    total += std::exp(log_m_factorial - std::lgamma(static_cast<double>(i) + 1.0) -
+                      std::lgamma(static_cast<double>(m - i) + 1.0) + log_half_m);
+  }
+  return total;
+}
+
+// The value at fraction q of sorted values (nearest rank).
+double quantile(const std::vector<double>& sorted, double q) {
+  const auto last = static_cast<double>(sorted.size() - 1);
+  return sorted[static_cast<std::size_t>(std::lround(q * last))];
+}
+
+}  // namespace
+
+PairedComparison compare_paired(const std::vector<double>& a, const std::vector<double>& b,
+                                std::uint64_t seed, std::size_t resamples) {
+  if (a.size() != b.size()) throw Error("compare_paired: the score lists differ in length");
+  if (a.empty()) throw Error("compare_paired: no objects to compare");
+  if (resamples == 0) throw Error("compare_paired: resamples must be positive");
+  const auto finite = [](double x) { return std::isfinite(x); };
+  if (!std::all_of(a.begin(), a.end(), finite) || !std::all_of(b.begin(), b.end(), finite)) {
+    throw Error("compare_paired: a score is NaN or infinite");
+  }
+  PairedComparison c;
+  c.objects = a.size();
+  std::vector<double> difference(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    difference[i] = b[i] - a[i];
+    c.wins += a[i] < b[i];
+    c.losses += a[i] > b[i];
+  }
+  const std::size_t decided = c.wins + c.losses;
+  if (decided > 0) {
+    c.sign_test_p = std::min(1.0, 2.0 * binomial_half_cdf(std::min(c.wins, c.losses), decided));
+  }
+  const auto n = static_cast<double>(difference.size());
+  c.mean_difference = std::accumulate(difference.begin(), difference.end(), 0.0) / n;
+
+  Rng rng(seed);
+  std::vector<double> means(resamples);
+  for (double& mean : means) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < difference.size(); ++i)
+      sum += difference[rng.index(difference.size())];
+    mean = sum / n;
+  }
+  std::sort(means.begin(), means.end());
+  c.ci_low = quantile(means, 0.025);
+  c.ci_high = quantile(means, 0.975);
+  return c;
+}
+
+}  // namespace graspecmf::metrics

@@ -1,0 +1,28 @@
+#pragma once
+// Whether one method beats another on the same objects, with the uncertainty that a few dozen
+// objects leave: wins and losses per object, an exact sign test and a bootstrap interval for the
+// mean difference. Scores are lower-is-better (EMDs).
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace graspecmf::metrics {
+
+struct PairedComparison {
+  std::size_t objects = 0;
+  std::size_t wins = 0;          // objects where a < b
+  std::size_t losses = 0;        // objects where a > b (the rest are ties)
+  double sign_test_p = 1.0;      // two-sided exact binomial test of wins against losses
+  double mean_difference = 0.0;  // mean of b − a: positive when a is better
+  double ci_low = 0.0;           // 95 % percentile-bootstrap interval of that mean
+  double ci_high = 0.0;
+};
+
+// Compares scores a[i] and b[i] of the same objects; `resamples` bootstrap draws of the objects
+// (with replacement) from `seed`. Throws Error if the lists differ in length, are empty, hold a
+// non-finite score, or resamples is 0.
+PairedComparison compare_paired(const std::vector<double>& a, const std::vector<double>& b,
+                                std::uint64_t seed, std::size_t resamples = 10000);
+
+}  // namespace graspecmf::metrics
