@@ -54,7 +54,7 @@ TrainConfig tiny_config() {
 }
 
 TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
-  for (const char* name : {"paper.json", "cpu.json"}) {
+  for (const char* name : {"paper.json", "cpu.json", "cpu-wide.json"}) {
     const fs::path file = fs::path(GRASPECMF_DATA_DIR) / ".." / "configs" / name;
     const TrainConfig c = read_train_config(file);
     EXPECT_EQ(to_json(train_config_from_json(to_json(c))), to_json(c)) << name;
