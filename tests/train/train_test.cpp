@@ -259,10 +259,14 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   ASSERT_TRUE(b.floor_emd.has_value());
   EXPECT_GT(*b.floor_emd, 0.0);
   EXPECT_FALSE(evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 61, 7).floor_emd);
-  // An object is its own nearest neighbour with identical grasps: EMD 0.
+  // A training object is compared with the nearest other one (leave-one-out), not with itself.
   const std::vector<data::GraspObject> with_itself = {boxes[1], boxes[0]};
-  EXPECT_NEAR(evaluate_baselines(boxes[0], TrainingShapes(with_itself, 7), 50, 7).nearest_emd, 0.0,
-              1e-12);
+  const BaselineEvaluation own =
+      evaluate_baselines(boxes[0], TrainingShapes(with_itself, 7), 50, 7);
+  EXPECT_EQ(own.nearest, boxes[1].name);
+  EXPECT_GT(own.nearest_emd, 0.0);
+  const std::vector<data::GraspObject> only_itself = {boxes[0]};
+  EXPECT_THROW(evaluate_baselines(boxes[0], TrainingShapes(only_itself, 7), 50, 7), Error);
   EXPECT_THROW(TrainingShapes({}, 7), Error);
 }
 

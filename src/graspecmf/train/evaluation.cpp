@@ -2,6 +2,7 @@
 
 #include <limits>
 #include <numeric>
+#include <optional>
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
@@ -87,16 +88,18 @@ const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object
                                                  Eigen::Vector3d& nearest_centroid) const {
   const std::vector<Eigen::Vector3d> cloud = centred_cloud(object, seed_, centroid);
   double best = std::numeric_limits<double>::infinity();
-  std::size_t best_index = 0;
+  std::optional<std::size_t> best_index;
   for (std::size_t i = 0; i < clouds_.size(); ++i) {
+    if (objects_[i].name == object.name) continue;
     const double d = metrics::chamfer_distance(cloud, clouds_[i]);
-    if (d < best) {
+    if (!best_index || d < best) {
       best = d;
       best_index = i;
     }
   }
-  nearest_centroid = centroids_[best_index];
-  return objects_[best_index];
+  if (!best_index) throw Error(object.name + ": no other training object to compare with");
+  nearest_centroid = centroids_[*best_index];
+  return objects_[*best_index];
 }
 
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,

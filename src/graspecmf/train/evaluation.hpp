@@ -50,7 +50,9 @@ class TrainingShapes {
  public:
   // Keeps a reference to `objects`, which must outlive this. Throws Error if it is empty.
   TrainingShapes(const std::vector<data::GraspObject>& objects, std::uint64_t seed);
-  // The training object whose centred cloud is closest (Chamfer) to `object`'s, and its centroid.
+  // The training object whose centred cloud is closest (Chamfer) to `object`'s, and its centroid;
+  // one with `object`'s own name is passed over (leave-one-out, for evaluating the train split).
+  // Throws Error if no other training object exists.
   const data::GraspObject& nearest(const data::GraspObject& object, Eigen::Vector3d& centroid,
                                    Eigen::Vector3d& nearest_centroid) const;
 
@@ -64,8 +66,8 @@ class TrainingShapes {
 // The two reference baselines of issue 5, in the object's own frame (a common rotation leaves the
 // EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
 // and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
-// frames sit that far from the surface); and the successful grasps of the training object with the
-// smallest Chamfer distance between centred seeded clouds. Also the sampling floor.
+// frames sit that far from the surface); and the successful grasps of the other training object
+// with the smallest Chamfer distance between centred seeded clouds. Also the sampling floor.
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
                                       std::uint64_t seed);
