@@ -8,6 +8,7 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -212,7 +213,7 @@ void run_evaluate(const EvaluateArgs& a) {
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
-  double total = 0, total_random = 0, total_nearest = 0, total_floor = 0;
+  double total = 0, total_random = 0, total_floor = 0;
   std::size_t floors = 0;  // objects with a sampling floor (≥ 2n successful grasps)
   std::vector<double> model_emds, nearest_emds;
   std::string table =
@@ -238,7 +239,6 @@ void run_evaluate(const EvaluateArgs& a) {
                            b.nearest_n < e.n ? fmt::format(", n = {}", b.nearest_n) : "",
                            b.floor_emd ? fmt::format("{:.4f}", *b.floor_emd) : "n/a");
       total_random += b.random_emd;
-      total_nearest += b.nearest_emd;
       model_emds.push_back(e.mean_emd);
       nearest_emds.push_back(b.nearest_emd);
       if (b.floor_emd) {
@@ -264,8 +264,10 @@ void run_evaluate(const EvaluateArgs& a) {
   std::string summary =
       fmt::format("mean EMD over {} objects: {:.4f}", objects.size(), total / count);
   if (a.baselines) {
+    const double mean_nearest =
+        std::accumulate(nearest_emds.begin(), nearest_emds.end(), 0.0) / count;
     report["mean_random_emd"] = total_random / count;
-    report["mean_nearest_emd"] = total_nearest / count;
+    report["mean_nearest_emd"] = mean_nearest;
     const metrics::PairedComparison c = metrics::compare_paired(model_emds, nearest_emds, a.seed);
     report["objects_below_nearest"] = c.wins;
     report["nearest_comparison"] = {{"wins", c.wins},
@@ -277,7 +279,7 @@ void run_evaluate(const EvaluateArgs& a) {
         " (random grasps {:.4f}, nearest training object {:.4f}; the model is below the nearest "
         "object on {} of {}, sign test p = {:.3g}; nearest minus model: mean {:+.4f}, 95 % "
         "bootstrap interval [{:+.4f}, {:+.4f}])",
-        total_random / count, total_nearest / count, c.wins, objects.size(), c.sign_test_p,
+        total_random / count, mean_nearest, c.wins, objects.size(), c.sign_test_p,
         c.mean_difference, c.ci_low, c.ci_high);
     if (floors == objects.size()) {
       report["mean_floor_emd"] = total_floor / count;

@@ -20,8 +20,15 @@ namespace {
 struct PackedLayout {
   int64_t channels;  // C
   int64_t width;     // W
+  int64_t rows;      // packed rows in the tensor
   bool shared() const { return width == channels + 1 && channels != 1; }
 };
+
+// The layout of a contiguous packed tensor with C = channels.
+PackedLayout packed_layout(const torch::Tensor& packed, int64_t channels) {
+  const int64_t width = packed.size(-1);
+  return {channels, width, packed.numel() / (3 * width)};
+}
 
 // out (3 rows of C) = VN-LeakyReLU of one packed row; `Shared` reads d from column C always.
 template <bool Shared>
@@ -90,15 +97,14 @@ class PackedLeakyReLU : public torch::autograd::Function<PackedLeakyReLU> {
     ctx->save_for_backward({input});
     ctx->saved_data["channels"] = channels;
     ctx->saved_data["slope"] = slope;
-    const PackedLayout layout{channels, input.size(-1)};
-    const int64_t rows = input.numel() / (3 * layout.width);
+    const PackedLayout layout = packed_layout(input, channels);
     auto sizes = input.sizes().vec();
     sizes.back() = channels;
     auto out = torch::empty(sizes, input.options());
     const float* in_data = input.data_ptr<float>();
     float* out_data = out.data_ptr<float>();
     const auto beta = static_cast<float>(1.0 - slope);
-    at::parallel_for(0, rows, row_grain(channels), [&](int64_t begin, int64_t end) {
+    at::parallel_for(0, layout.rows, row_grain(channels), [&](int64_t begin, int64_t end) {
       for (int64_t r = begin; r < end; ++r) {
         const float* row = in_data + r * 3 * layout.width;
         float* row_out = out_data + r * 3 * channels;
@@ -117,14 +123,13 @@ class PackedLeakyReLU : public torch::autograd::Function<PackedLeakyReLU> {
     const auto input = ctx->get_saved_variables()[0];
     const int64_t channels = ctx->saved_data["channels"].toInt();
     const auto beta = static_cast<float>(1.0 - ctx->saved_data["slope"].toDouble());
-    const PackedLayout layout{channels, input.size(-1)};
-    const int64_t rows = input.numel() / (3 * layout.width);
+    const PackedLayout layout = packed_layout(input, channels);
     const auto grad_out = grad_outputs[0].contiguous();
     auto grad_in = torch::empty_like(input);
     const float* in_data = input.data_ptr<float>();
     const float* go = grad_out.data_ptr<float>();
     float* gi = grad_in.data_ptr<float>();
-    at::parallel_for(0, rows, row_grain(channels), [&](int64_t begin, int64_t end) {
+    at::parallel_for(0, layout.rows, row_grain(channels), [&](int64_t begin, int64_t end) {
       for (int64_t r = begin; r < end; ++r) {
         const float* row = in_data + r * 3 * layout.width;
         float* grad_row = gi + r * 3 * layout.width;
