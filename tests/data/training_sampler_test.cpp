@@ -7,6 +7,7 @@
 
 #include "../geometry/test_meshes.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 
 namespace graspecmf::data {
@@ -104,6 +105,48 @@ TEST(TrainingSampler, AugmentationSettingsDrawTheRightRotations) {
   }
   EXPECT_EQ(parse_augmentation(to_string(Augmentation::z)), Augmentation::z);
   EXPECT_THROW(parse_augmentation("SO3"), Error);
+}
+
+TEST(TrainingSampler, StretchScalesPointsAndMovesEachGraspWithItsPadCentre) {
+  std::vector<GraspObject> objects = boxes(1, 6);
+  geometry::SurfacePoints cloud = geometry::sample_surface(objects[0].mesh, 50, 2);
+  const geometry::SurfacePoints original = cloud;
+  std::vector<lie::Pose> grasps = objects[0].grasps;
+  const Eigen::Vector3d factors(1.1, 0.8, 1.25);
+  stretch_object(cloud, grasps, factors);
+  for (std::size_t i = 0; i < 50; ++i) {
+    EXPECT_LT((cloud.points[i] - original.points[i].cwiseProduct(factors)).norm(), 1e-15);
+    // A box face's normal is an axis, so stretching leaves it unchanged.
+    EXPECT_LT((cloud.normals[i] - original.normals[i]).norm(), 1e-12);
+  }
+  for (std::size_t k = 0; k < 6; ++k) {
+    const lie::Pose& before = objects[0].grasps[k];
+    EXPECT_TRUE(grasps[k].R.isApprox(before.R, 0));
+    const Eigen::Vector3d approach = before.R.col(2) * gripper::panda::kPadCenterZ;
+    EXPECT_LT(((grasps[k].p + approach) - (before.p + approach).cwiseProduct(factors)).norm(),
+              1e-15);
+  }
+}
+
+TEST(TrainingSampler, StretchFactorsStayInTheirRangeAndZeroTurnsItOff) {
+  TrainingSamplerOptions options;
+  options.objects_per_step = 3;
+  options.grasps_per_object = 4;
+  options.points = 16;
+  TrainingSampler plain(boxes(3, 4), options, 5);
+  options.stretch = 0.2;
+  TrainingSampler stretched(boxes(3, 4), options, 5);
+  const std::vector<ObjectSample> a = plain.next_step(), b = stretched.next_step();
+  for (std::size_t i = 0; i < 3; ++i) {
+    EXPECT_TRUE(a[i].stretch.isOnes(0));
+    EXPECT_EQ(a[i].object, b[i].object);
+    EXPECT_FALSE(b[i].stretch.isOnes(1e-3));
+    EXPECT_LE((b[i].stretch - Eigen::Vector3d::Ones()).cwiseAbs().maxCoeff(), 0.2);
+  }
+  // The first object's draws before its stretch are the unstretched sampler's.
+  EXPECT_TRUE(a[0].rotation.isApprox(b[0].rotation, 0));
+  options.stretch = 0.5;
+  EXPECT_THROW(TrainingSampler(boxes(1, 1), options, 1), Error);
 }
 
 TEST(TrainingSampler, RestoredStateGivesTheSameSteps) {

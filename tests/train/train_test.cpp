@@ -89,6 +89,9 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"ema_decay", -0.1}}), Error);
   EXPECT_THROW(train_config_from_json({{"sampling", {{"solver", "rk45"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"augmentation", "xyz"}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"data", {{"stretch", 0.5}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"data", {{"stretch", -0.1}}}}), Error);
+  EXPECT_DOUBLE_EQ(train_config_from_json({{"data", {{"stretch", 0.1}}}}).data.stretch, 0.1);
   EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"points", 8}, {"k", 16}}}}}}),
                Error);
 }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 
 namespace graspecmf::data {
@@ -52,12 +53,26 @@ ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,
   return sample;
 }
 
+void stretch_object(geometry::SurfacePoints& cloud, std::vector<lie::Pose>& grasps,
+                    const Eigen::Vector3d& factors) {
+  const Eigen::Vector3d inverse = factors.cwiseInverse();
+  for (Eigen::Vector3d& q : cloud.points) q = q.cwiseProduct(factors);
+  for (Eigen::Vector3d& n : cloud.normals) n = n.cwiseProduct(inverse).normalized();
+  for (lie::Pose& grasp : grasps) {
+    const Eigen::Vector3d pad = grasp.R.col(2) * gripper::panda::kPadCenterZ;
+    grasp.p = (grasp.p + pad).cwiseProduct(factors) - pad;
+  }
+}
+
 TrainingSampler::TrainingSampler(std::vector<GraspObject> objects,
                                  const TrainingSamplerOptions& options, std::uint64_t seed)
     : objects_(std::move(objects)), options_(options), rng_(seed) {
   if (objects_.empty()) throw Error("training needs at least one object");
   if (options.objects_per_step == 0 || options.points == 0 || !(options.position_scale > 0)) {
     throw Error("training sampler: objects_per_step, points and position_scale must be positive");
+  }
+  if (!(options.stretch >= 0 && options.stretch < 0.5)) {
+    throw Error("training sampler: stretch must be in [0, 0.5)");
   }
   surfaces_.reserve(objects_.size());
   for (const GraspObject& object : objects_) {
@@ -95,9 +110,16 @@ std::vector<ObjectSample> TrainingSampler::next_step() {
       g = Eigen::AngleAxisd(2.0 * M_PI * rng_.uniform(), Eigen::Vector3d::UnitZ())
               .toRotationMatrix();
     }
-    ObjectSample sample = make_object_sample(surfaces_[index].sample(options_.points, rng_), grasps,
-                                             g, options_.position_scale);
+    geometry::SurfacePoints cloud = surfaces_[index].sample(options_.points, rng_);
+    Eigen::Vector3d factors = Eigen::Vector3d::Ones();
+    if (options_.stretch > 0) {
+      for (int axis = 0; axis < 3; ++axis)
+        factors[axis] += options_.stretch * (2.0 * rng_.uniform() - 1.0);
+      stretch_object(cloud, grasps, factors);
+    }
+    ObjectSample sample = make_object_sample(cloud, grasps, g, options_.position_scale);
     sample.object = index;
+    sample.stretch = factors;
     step.push_back(std::move(sample));
   }
   return step;

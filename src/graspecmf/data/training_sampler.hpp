@@ -30,6 +30,7 @@ struct ObjectSample {
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  // g
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();      // c, metres, after the rotation
   double scale = 1.0;
+  Eigen::Vector3d stretch = Eigen::Vector3d::Ones();  // shape augmentation factors, object frame
 };
 
 struct TrainingSamplerOptions {
@@ -38,7 +39,16 @@ struct TrainingSamplerOptions {
   std::size_t points = 1024;
   double position_scale = 8.0;
   Augmentation augmentation = Augmentation::so3;
+  // Shape augmentation: before the rotation, each object is stretched along its own x, y and z
+  // axes by factors drawn uniformly from [1 − stretch, 1 + stretch]; 0 turns it off.
+  double stretch = 0.0;
 };
+
+// Stretches a sampled object by S = diag(factors) in its own frame: points q → S q (normals
+// follow S⁻¹), and each grasp keeps its orientation while its finger-pad centre c moves to S c.
+// Approximate labels for a slightly different shape: a stretched surface's normals tilt.
+void stretch_object(geometry::SurfacePoints& cloud, std::vector<lie::Pose>& grasps,
+                    const Eigen::Vector3d& factors);
 
 // The cloud of `points` surface points of mesh, rotated by g, centred and scaled; grasps likewise.
 ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,

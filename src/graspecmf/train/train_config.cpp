@@ -55,6 +55,9 @@ void validate(const TrainConfig& c) {
   }
   if (c.data.objects_per_step < 1) throw Error("train config: objects_per_step must be ≥ 1");
   if (!(c.data.position_scale > 0)) throw Error("train config: position_scale must be > 0");
+  if (!(c.data.stretch >= 0 && c.data.stretch < 0.5)) {
+    throw Error("train config: data.stretch must be in [0, 0.5)");
+  }
   if (c.steps < 1) throw Error("train config: steps must be ≥ 1");
   if (!(c.learning_rate > 0) || !(c.weight_decay >= 0)) {
     throw Error("train config: learning_rate must be > 0 and weight_decay ≥ 0");
@@ -91,7 +94,8 @@ json to_json(const TrainConfig& c) {
            {{"objects_per_step", c.data.objects_per_step},
             {"grasps_per_object", c.data.grasps_per_object},
             {"position_scale", c.data.position_scale},
-            {"augmentation", data::to_string(c.data.augmentation)}}},
+            {"augmentation", data::to_string(c.data.augmentation)},
+            {"stretch", c.data.stretch}}},
           {"steps", c.steps},
           {"learning_rate", c.learning_rate},
           {"learning_rate_schedule", c.learning_rate_schedule},
@@ -139,13 +143,15 @@ TrainConfig train_config_from_json(const json& j) {
   }
   if (j.contains("data")) {
     const json& d = j["data"];
-    only(d, {"objects_per_step", "grasps_per_object", "position_scale", "augmentation"}, "data.");
+    only(d, {"objects_per_step", "grasps_per_object", "position_scale", "augmentation", "stretch"},
+         "data.");
     read(d, "objects_per_step", c.data.objects_per_step, "data.");
     read(d, "grasps_per_object", c.data.grasps_per_object, "data.");
     read(d, "position_scale", c.data.position_scale, "data.");
     std::string augmentation = data::to_string(c.data.augmentation);
     read(d, "augmentation", augmentation, "data.");
     c.data.augmentation = data::parse_augmentation(augmentation);
+    read(d, "stretch", c.data.stretch, "data.");
   }
   read(j, "steps", c.steps, "");
   read(j, "learning_rate", c.learning_rate, "");
