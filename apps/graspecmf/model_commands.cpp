@@ -23,6 +23,8 @@
 #include "graspecmf/geometry/surface_sampling.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/metrics/paired_comparison.hpp"
+#include "graspecmf/sim/batch.hpp"
+#include "graspecmf/sim/scene_object.hpp"
 #include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
@@ -158,9 +160,11 @@ void run_sample(const SampleArgs& a) {
 
 struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
+  std::string sim_config, cache;  // for --success
   bool baselines = false;
   SamplingOverrides sampling;
   std::size_t num = 0;
+  std::size_t success = 0;  // grasps simulated per object and rotation; 0: no simulation
   std::uint64_t seed = 0;
   int threads = kDefaultThreads;
 };
@@ -192,10 +196,41 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
         geometry::read_mesh(data::find_object_mesh(a.acronym, record.object.file, a.mesh_root)),
         record.object.scale);
     object.grasps = record.successful_grasps();
+    object.info = record.object;
     if (object.grasps.empty()) throw Error(a.acronym + ": no successful grasps to compare with");
     return {object};
   }
   return split_objects(a.data, a.split);
+}
+
+// The first `count` grasps of a list (all of them if it is shorter).
+std::vector<lie::Pose> first(const std::vector<lie::Pose>& grasps, std::size_t count) {
+  return {grasps.begin(),
+          grasps.begin() + static_cast<std::ptrdiff_t>(std::min(count, grasps.size()))};
+}
+
+// Simulated success of the first `count` grasps of each list, summed over the lists.
+sim::SuccessCount simulated_success(const sim::SceneObject& scene,
+                                    const std::vector<std::vector<lie::Pose>>& lists,
+                                    std::size_t count, const sim::TrialConfig& config,
+                                    int threads) {
+  sim::SuccessCount total;
+  for (const std::vector<lie::Pose>& grasps : lists) {
+    total += sim::count_successes(scene, first(grasps, count), config, threads);
+  }
+  return total;
+}
+
+nlohmann::json success_json(const sim::SuccessCount& c) {
+  return {{"successes", c.successes}, {"trials", c.trials}, {"rate", c.rate()}};
+}
+
+nlohmann::json comparison_json(const metrics::PairedComparison& c) {
+  return {{"wins", c.wins},
+          {"losses", c.losses},
+          {"sign_test_p", c.sign_test_p},
+          {"mean_difference", c.mean_difference},
+          {"ci_95", {c.ci_low, c.ci_high}}};
 }
 
 void run_evaluate(const EvaluateArgs& a) {
@@ -211,15 +246,24 @@ void run_evaluate(const EvaluateArgs& a) {
     shapes.emplace(training, a.seed);
   }
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
+  if (a.success == 0 && !(a.sim_config.empty() && a.cache.empty())) {
+    throw Error("evaluate: --sim-config and --cache apply only with --success K");
+  }
+  const sim::TrialConfig trial_config = sim::read_trial_config(a.sim_config);
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
   double total = 0, total_random = 0, total_floor = 0;
   std::size_t floors = 0;  // objects with a sampling floor (≥ 2n successful grasps)
   std::vector<double> model_emds, nearest_emds;
+  sim::SuccessCount model_success, nearest_success;
+  std::vector<double> model_failure_rates, nearest_failure_rates;  // lower is better, as EMDs
   std::string table =
       a.baselines ? "| object | n | EMD (3 rotations) | mean | random | nearest training object | "
-                    "floor |\n|---|---|---|---|---|---|---|\n"
-                  : "| object | n | EMD (3 rotations) | mean |\n|---|---|---|---|\n";
+                    "floor |"
+                  : "| object | n | EMD (3 rotations) | mean |";
+  if (a.success > 0) table += a.baselines ? " success | nearest's success |" : " success |";
+  table += "\n|" + std::string(a.baselines ? "---|---|---|---|---|---|---|" : "---|---|---|---|") +
+           (a.success > 0 ? (a.baselines ? "---|---|" : "---|") : "") + "\n";
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
@@ -228,8 +272,10 @@ void run_evaluate(const EvaluateArgs& a) {
     json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
     table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
+    std::optional<train::BaselineEvaluation> baseline;
     if (a.baselines) {
-      const train::BaselineEvaluation b = train::evaluate_baselines(object, *shapes, n, a.seed);
+      const train::BaselineEvaluation& b =
+          baseline.emplace(train::evaluate_baselines(object, *shapes, n, a.seed));
       entry["random_emd"] = b.random_emd;
       entry["nearest_training_object"] = b.nearest;
       entry["nearest_emd"] = b.nearest_emd;
@@ -244,6 +290,25 @@ void run_evaluate(const EvaluateArgs& a) {
       if (b.floor_emd) {
         total_floor += *b.floor_emd;
         ++floors;
+      }
+    }
+    if (a.success > 0) {
+      const sim::SceneObject scene = sim::make_scene_object(
+          object.mesh, object.info, trial_config, {},
+          a.cache.empty() ? sim::default_decomposition_cache() : fs::path(a.cache));
+      const sim::SuccessCount s =
+          simulated_success(scene, e.generated, a.success, trial_config, a.threads);
+      entry["success"] = success_json(s);
+      table += fmt::format(" {:.1f} % |", 100 * s.rate());
+      model_success += s;
+      model_failure_rates.push_back(1 - s.rate());
+      if (baseline) {
+        const sim::SuccessCount ns = simulated_success(scene, {baseline->nearest_grasps}, a.success,
+                                                       trial_config, a.threads);
+        entry["nearest_success"] = success_json(ns);
+        table += fmt::format(" {:.1f} % |", 100 * ns.rate());
+        nearest_success += ns;
+        nearest_failure_rates.push_back(1 - ns.rate());
       }
     }
     table += "\n";
@@ -270,11 +335,7 @@ void run_evaluate(const EvaluateArgs& a) {
     report["mean_nearest_emd"] = mean_nearest;
     const metrics::PairedComparison c = metrics::compare_paired(model_emds, nearest_emds, a.seed);
     report["objects_below_nearest"] = c.wins;
-    report["nearest_comparison"] = {{"wins", c.wins},
-                                    {"losses", c.losses},
-                                    {"sign_test_p", c.sign_test_p},
-                                    {"mean_difference", c.mean_difference},
-                                    {"ci_95", {c.ci_low, c.ci_high}}};
+    report["nearest_comparison"] = comparison_json(c);
     summary += fmt::format(
         " (random grasps {:.4f}, nearest training object {:.4f}; the model is below the nearest "
         "object on {} of {}, sign test p = {:.3g}; nearest minus model: mean {:+.4f}, 95 % "
@@ -284,6 +345,23 @@ void run_evaluate(const EvaluateArgs& a) {
     if (floors == objects.size()) {
       report["mean_floor_emd"] = total_floor / count;
       summary += fmt::format("; sampling floor {:.4f}", total_floor / count);
+    }
+  }
+  if (a.success > 0) {
+    report["success"] = success_json(model_success);
+    summary +=
+        fmt::format("; simulated success {:.1f} % ({} of {} grasps)", 100 * model_success.rate(),
+                    model_success.successes, model_success.trials);
+    if (a.baselines) {
+      // Failure rates are lower-is-better, so the comparison reads like the EMD one.
+      const metrics::PairedComparison c =
+          metrics::compare_paired(model_failure_rates, nearest_failure_rates, a.seed);
+      report["nearest_success"] = success_json(nearest_success);
+      report["nearest_success_comparison"] = comparison_json(c);
+      summary += fmt::format(
+          " against {:.1f} % for the nearest training object's grasps (higher on {} objects, "
+          "lower on {}, sign test p = {:.3g})",
+          100 * nearest_success.rate(), c.wins, c.losses, c.sign_test_p);
     }
   }
   std::cout << table << summary << "\n";
@@ -341,6 +419,15 @@ void add_model_commands(CLI::App& app) {
                      "sampling floor (two disjoint draws of the object's own grasps; needs 2n)");
   eval_cmd->add_option("--train-data", e->train_data,
                        "Dataset whose train split the nearest-object baseline searches");
+  eval_cmd
+      ->add_option("--success", e->success,
+                   "Also simulate the first K generated grasps of each rotation (and, with "
+                   "--baselines, K of the nearest object's) and report the success rate; "
+                   "METHOD.md uses 100")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
+  eval_cmd->add_option("--sim-config", e->sim_config,
+                       "Trial config for --success (JSON, as for simulate --config)");
+  eval_cmd->add_option("--cache", e->cache, "Convex-decomposition cache folder for --success");
   eval_cmd->add_option("--out", e->out, "JSON report");
   eval_cmd->add_option("--markdown", e->markdown, "Markdown report");
   eval_cmd->callback([e] { run_evaluate(*e); });

@@ -49,7 +49,8 @@ TEST(CliModel, TrainSampleEvaluate) {
   const auto evaluated =
       run("evaluate --model " + run_dir + " --data " + data.string() +
               " --split val --num 4 --baselines --solver euler --steps 3 --guidance 1.5 --out " +
-              (dir / "report.json").string(),
+              (dir / "report.json").string() + " --success 2 --threads 2 --cache " +
+              (dir / "cache").string(),
           dir);
   ASSERT_EQ(evaluated.exit_code, 0) << evaluated.err;
   EXPECT_NE(evaluated.out.find("mean EMD over 1 objects"), std::string::npos) << evaluated.out;
@@ -75,6 +76,15 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_EQ(comparison["ci_95"][1], comparison["mean_difference"]);
   EXPECT_EQ(comparison["sign_test_p"], 1.0);
   EXPECT_NE(evaluated.out.find("sign test p = 1"), std::string::npos) << evaluated.out;
+  // --success 2 simulates 2 generated grasps per rotation and 2 of the nearest object's.
+  EXPECT_EQ(object["success"]["trials"], 6);
+  EXPECT_EQ(object["nearest_success"]["trials"], 2);
+  EXPECT_EQ(report["success"], object["success"]);
+  const double rate = object["success"]["rate"].get<double>();
+  EXPECT_DOUBLE_EQ(rate, object["success"]["successes"].get<double>() / 6.0);
+  EXPECT_DOUBLE_EQ(report["nearest_success_comparison"]["mean_difference"].get<double>(),
+                   rate - object["nearest_success"]["rate"].get<double>());
+  EXPECT_NE(evaluated.out.find("simulated success"), std::string::npos) << evaluated.out;
 }
 
 TEST(CliModel, BadInput) {

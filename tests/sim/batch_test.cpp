@@ -36,6 +36,13 @@ TEST(RunTrials, SameLabelsOnOneAndTwoThreads) {
     EXPECT_EQ(one[i].closing_angular, two[i].closing_angular) << i;
   }
   EXPECT_THROW(run_trials(object, grasps, TrialConfig{}, 0), Error);
+  // count_successes counts the same trials' successes.
+  std::size_t successes = 0;
+  for (const TrialResult& r : one) successes += r.success ? 1 : 0;
+  const SuccessCount count = count_successes(object, grasps, TrialConfig{}, 2);
+  EXPECT_EQ(count.successes, successes);
+  EXPECT_EQ(count.trials, grasps.size());
+  EXPECT_DOUBLE_EQ(count.rate(), static_cast<double>(successes) / 6.0);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
+#include "graspecmf/metrics/emd.hpp"
 #include "graspecmf/train/checkpoint.hpp"
 #include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
@@ -243,6 +244,27 @@ TEST(Trainer, BadInputIsOneClearError) {
   EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
 }
 
+TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
+  torch::manual_seed(1);
+  const ScratchDir dir;
+  const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
+  const data::GraspObject box = data::AcronymDataset::load(dataset.objects()[0]);
+  const TrainConfig config = tiny_config();
+  const nn::GraspFlowModel model(config.model);
+  const ObjectEvaluation e =
+      evaluate_object(model, box, config, test_rotations(), 10, config.sampling, 3);
+  ASSERT_EQ(e.generated.size(), 3u);
+  // A common rotation leaves the EMD unchanged, so the grasps rotated back into the object's
+  // frame have each rotation's EMD against the unrotated reference.
+  const std::vector<lie::Pose> reference = reference_grasps(box, 10, 3);
+  for (std::size_t r = 0; r < 3; ++r) {
+    ASSERT_EQ(e.generated[r].size(), 10u);
+    EXPECT_NEAR(metrics::earth_movers_distance(e.generated[r], reference), e.emd[r], 1e-9) << r;
+  }
+  // The object keeps its grasp file's record.
+  EXPECT_EQ(box.info.file, "meshes/Box/b0.obj");
+}
+
 TEST(Baselines, NearestObjectAndRandomGrasps) {
   const ScratchDir dir;
   const fs::path root = tiny_dataset(dir);
@@ -257,6 +279,11 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   EXPECT_EQ(b.nearest, boxes[1].name);
   EXPECT_EQ(b.n, 50u);
   EXPECT_EQ(b.nearest_n, 50u);
+  // The kept nearest grasps are the ones compared.
+  ASSERT_EQ(b.nearest_grasps.size(), 50u);
+  EXPECT_DOUBLE_EQ(
+      metrics::earth_movers_distance(b.nearest_grasps, reference_grasps(boxes[2], 50, 7)),
+      b.nearest_emd);
   EXPECT_GT(b.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
   // 120 successful grasps hold two disjoint draws of 50 (a floor) but not of 61.
   ASSERT_TRUE(b.floor_emd.has_value());

@@ -36,6 +36,7 @@ struct GraspObject {
   std::string name;
   geometry::TriangleMesh mesh;    // raw mesh × scale, in the grasp file's frame
   std::vector<lie::Pose> grasps;  // successful grasps only
+  AcronymObjectInfo info;         // the grasp file's object record (mesh, scale, mass properties)
 };
 
 // Where the ACRONYM layout puts the mesh root for a grasp file: the folder above grasps/.

@@ -42,6 +42,16 @@ std::vector<TrialResult> run_trials(const SceneObject& object, const std::vector
   return results;
 }
 
+SuccessCount count_successes(const SceneObject& object, const std::vector<lie::Pose>& grasps,
+                             const TrialConfig& config, int threads) {
+  SuccessCount count;
+  for (const TrialResult& r : run_trials(object, grasps, config, threads)) {
+    count.successes += r.success ? 1 : 0;
+  }
+  count.trials = grasps.size();
+  return count;
+}
+
 data::GraspQualities acronym_qualities(const std::vector<TrialResult>& results) {
   data::GraspQualities q;
   for (const TrialResult& r : results) {

@@ -3,6 +3,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <utility>
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
@@ -52,6 +53,8 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
     const std::vector<lie::Pose> generated =
         sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r);
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
+    std::vector<lie::Pose>& kept = result.generated.emplace_back();
+    for (const lie::Pose& x : generated) kept.push_back({g.transpose() * x.R, g.transpose() * x.p});
   }
   result.mean_emd = std::accumulate(result.emd.begin(), result.emd.end(), 0.0) /
                     static_cast<double>(result.emd.size());
@@ -127,10 +130,11 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   for (lie::Pose& g : moved) g.p += centroid - neighbour_centroid;
   const std::size_t m = std::min(moved.size(), reference.size());
   result.nearest_n = m;
+  moved.resize(m);
   result.nearest_emd = metrics::earth_movers_distance(
-      std::vector<lie::Pose>(moved.begin(), moved.begin() + static_cast<std::ptrdiff_t>(m)),
-      std::vector<lie::Pose>(reference.begin(),
-                             reference.begin() + static_cast<std::ptrdiff_t>(m)));
+      moved, std::vector<lie::Pose>(reference.begin(),
+                                    reference.begin() + static_cast<std::ptrdiff_t>(m)));
+  result.nearest_grasps = std::move(moved);
   return result;
 }
 

@@ -17,6 +17,8 @@ struct ObjectEvaluation {
   std::size_t n = 0;        // grasps compared per rotation
   std::vector<double> emd;  // one per rotation
   double mean_emd = 0.0;
+  // The n generated grasps of each rotation, rotated back into the object's frame.
+  std::vector<std::vector<lie::Pose>> generated;
 };
 
 // The three fixed test rotations (a super-Fibonacci set; none is the identity).
@@ -27,7 +29,8 @@ std::vector<lie::Pose> shuffled_grasps(const data::GraspObject& object, std::uin
 std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
                                         std::uint64_t seed);
 // For each rotation g: the object's seeded cloud and reference grasps rotated by g, n grasps
-// sampled from the model for the rotated cloud, and their EMD to the rotated reference.
+// sampled from the model for the rotated cloud, and their EMD to the rotated reference; the
+// generated grasps are kept, in the object's frame.
 ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
@@ -39,6 +42,7 @@ struct BaselineEvaluation {
   std::string nearest;        // the training object closest in shape
   double nearest_emd = 0.0;   // its successful grasps, moved to this object's centroid
   std::size_t nearest_n = 0;  // grasps in that comparison: n, or fewer if it has fewer than n
+  std::vector<lie::Pose> nearest_grasps;  // those nearest_n grasps, moved onto this object
   // The sampling floor: the reference against the next n of the same shuffle (the object's own
   // grasps), when the object has at least 2n successful grasps.
   std::optional<double> floor_emd;
