@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <limits>
@@ -262,8 +263,10 @@ void run_evaluate(const EvaluateArgs& a) {
                     "floor |"
                   : "| object | n | EMD (3 rotations) | mean |";
   if (a.success > 0) table += a.baselines ? " success | nearest's success |" : " success |";
-  table += "\n|" + std::string(a.baselines ? "---|---|---|---|---|---|---|" : "---|---|---|---|") +
-           (a.success > 0 ? (a.baselines ? "---|---|" : "---|") : "") + "\n";
+  const auto columns = std::count(table.begin(), table.end(), '|') - 1;
+  table += "\n|";
+  for (std::ptrdiff_t c = 0; c < columns; ++c) table += "---|";
+  table += "\n";
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
