@@ -60,15 +60,25 @@ Velocity run(const VectorField& field, const torch::Tensor& z, const Grasps& x) 
                         x.keep);
 }
 
-// The field with its input list written out: [z, r1, r2, r3, p, t·f_equi] per grasp.
+VectorFieldOptions small_field_z_every_layer() {
+  VectorFieldOptions options = small_field();
+  options.z_every_layer = true;
+  return options;
+}
+
+// The field with its input lists written out: [z, r1, r2, r3, p, t·f_equi] per grasp, and with
+// z_every_layer [h, z] for each later hidden layer.
 Velocity naive_field(const VectorField& field, const torch::Tensor& z, const Grasps& x) {
   const int64_t g = x.rotation.size(0);
   const auto z_per_grasp = z.index_select(0, x.object_index) * x.keep.view({g, 1, 1});
   const auto inputs =
       torch::cat({z_per_grasp, x.rotation.transpose(1, 2), x.position.unsqueeze(1)}, 1);
   const auto lifted = x.time.view({g, 1, 1}) * field->lift->forward(inputs);
-  auto h = torch::cat({inputs, lifted}, 1);
-  for (const auto& layer : field->layers) h = layer->forward(h);
+  auto h = field->layers.front()->forward(torch::cat({inputs, lifted}, 1));
+  for (std::size_t l = 1; l < field->layers.size(); ++l) {
+    if (field->options().z_every_layer) h = torch::cat({h, z_per_grasp}, 1);
+    h = field->layers[l]->forward(h);
+  }
   const auto out = field->out->forward(h);
   return {out.select(1, 0), out.select(1, 1)};
 }
@@ -85,9 +95,20 @@ TEST_F(VectorFieldTest, SplitFirstLayerMatchesTheFullInputList) {
   EXPECT_LT(relative_error(fast.v, naive.v), 1e-5);
 }
 
-TEST_F(VectorFieldTest, IsEquivariant) {
-  VectorField field;
-  const auto z = torch::randn({2, 341, 3});
+TEST_F(VectorFieldTest, ZEveryLayerMatchesTheFullInputLists) {
+  VectorField field(small_field_z_every_layer());
+  EXPECT_EQ(field->layers[1]->feature->weight.size(1), 32 + 16);
+  const auto z = torch::randn({3, 16, 3});
+  const auto x = random_grasps(40, 3);
+  const auto fast = run(field, z, x);
+  const auto naive = naive_field(field, z, x);
+  EXPECT_LT(relative_error(fast.omega, naive.omega), 1e-5);
+  EXPECT_LT(relative_error(fast.v, naive.v), 1e-5);
+}
+
+// Rotating z and the poses by 3 random rotations rotates the field's output.
+void expect_equivariant(const VectorField& field, int64_t z_channels) {
+  const auto z = torch::randn({2, z_channels, 3});
   const auto x = random_grasps(50, 2);
   const auto velocity = run(field, z, x);
   for (std::uint64_t seed = 1; seed <= 3; ++seed) {
@@ -101,19 +122,29 @@ TEST_F(VectorFieldTest, IsEquivariant) {
   }
 }
 
-TEST_F(VectorFieldTest, NullConditionIgnoresZ) {
-  VectorField field(small_field());
+TEST_F(VectorFieldTest, IsEquivariant) {
+  expect_equivariant(VectorField(), 341);
+  expect_equivariant(VectorField(small_field_z_every_layer()), 16);
+}
+
+// With keep = 0 the field does not depend on z; with keep = 1 (bool) it does.
+void expect_null_condition_ignores_z(const VectorField& field) {
   auto x = random_grasps(30, 2);
   x.keep = torch::zeros({30});
   const auto a = run(field, torch::randn({2, 16, 3}), x);
   const auto b = run(field, torch::randn({2, 16, 3}), x);
   EXPECT_TRUE(torch::equal(a.omega, b.omega));
   EXPECT_TRUE(torch::equal(a.v, b.v));
-  // The same grasps conditioned on z do depend on it; a bool mask means the same as a float one.
   x.keep = torch::ones({30}, torch::kBool);
   EXPECT_GT(relative_error(run(field, torch::randn({2, 16, 3}), x).v,
                            run(field, torch::randn({2, 16, 3}), x).v),
             1e-3);
+}
+
+TEST_F(VectorFieldTest, NullConditionIgnoresZ) {
+  for (const auto& options : {small_field(), small_field_z_every_layer()}) {
+    expect_null_condition_ignores_z(VectorField(options));
+  }
 }
 
 TEST_F(VectorFieldTest, RejectsBadInput) {
@@ -143,6 +174,13 @@ TEST_F(VectorFieldTest, RejectsBadInput) {
   bad = x;
   bad.object_index = x.object_index.to(torch::kInt);
   EXPECT_THROW(call(bad), Error);
+  // A condition computed without z_every_layer's terms, and one with them.
+  VectorField every(small_field_z_every_layer());
+  EXPECT_THROW(every->forward(condition, x.object_index, x.rotation, x.position, x.time, x.keep),
+               Error);
+  EXPECT_THROW(field->forward(every->condition(torch::randn({2, 16, 3})), x.object_index,
+                              x.rotation, x.position, x.time, x.keep),
+               Error);
 }
 
 TEST_F(VectorFieldTest, ModelGradientsReachEveryParameter) {

@@ -55,7 +55,7 @@ TrainConfig tiny_config() {
 }
 
 TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
-  for (const char* name : {"paper.json", "cpu.json", "cpu-wide.json"}) {
+  for (const char* name : {"paper.json", "cpu.json", "cpu-wide.json", "cpu-z-every-layer.json"}) {
     const fs::path file = fs::path(GRASPECMF_DATA_DIR) / ".." / "configs" / name;
     const TrainConfig c = read_train_config(file);
     EXPECT_EQ(to_json(train_config_from_json(to_json(c))), to_json(c)) << name;
@@ -241,6 +241,10 @@ TEST(Trainer, BadInputIsOneClearError) {
   wider.model.field.hidden_widths = {16, 8};
   std::ofstream(dir / "mismatch/config.json") << to_json(wider).dump();
   fs::copy_file(dir / "run/checkpoint.pt", dir / "mismatch/checkpoint.pt");
+  EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
+  TrainConfig every_layer = config;
+  every_layer.model.field.z_every_layer = true;
+  std::ofstream(dir / "mismatch/config.json") << to_json(every_layer).dump();
   EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
 }
 

@@ -22,8 +22,10 @@ VectorFieldImpl::VectorFieldImpl(VectorFieldOptions options) : options_(std::mov
   for (std::size_t l = 0; l < options_.hidden_widths.size(); ++l) {
     const int64_t width = options_.hidden_widths[l];
     detail::require(width >= 1, "VectorField: hidden widths must be positive");
-    layers.push_back(register_module("layer" + std::to_string(l),
-                                     VNLinearLeakyReLU(in, width, false, options_.slope)));
+    const int64_t z_inputs = l > 0 && options_.z_every_layer ? z : 0;
+    layers.push_back(
+        register_module("layer" + std::to_string(l),
+                        VNLinearLeakyReLU(in + z_inputs, width, false, options_.slope)));
     in = width;
   }
   out = register_module("out", VNLinear(in, 2));
@@ -36,7 +38,18 @@ ObjectCondition VectorFieldImpl::condition(const torch::Tensor& z) const {
   const auto weights =
       torch::cat({lift->weight.narrow(1, 0, zc), first.feature->weight.narrow(1, 0, zc),
                   first.direction->weight.narrow(1, 0, zc)});
-  return {torch::linear(z.transpose(1, 2), weights)};
+  const auto z_last = z.transpose(1, 2);
+  ObjectCondition condition{torch::linear(z_last, weights), {}};
+  if (options_.z_every_layer) {
+    for (std::size_t l = 1; l < layers.size(); ++l) {
+      const auto& layer = *layers[l];
+      const int64_t in = options_.hidden_widths[l - 1];
+      condition.layer_terms.push_back(
+          torch::linear(z_last, torch::cat({layer.feature->weight.narrow(1, in, zc),
+                                            layer.direction->weight.narrow(1, in, zc)})));
+    }
+  }
+  return condition;
 }
 
 Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
@@ -47,6 +60,8 @@ Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
   const int64_t hidden = options_.hidden_widths.front();
   detail::require_shape(condition.z_terms, "VectorField: condition.z_terms",
                         {-1, 3, 1 + 2 * hidden});
+  detail::require(condition.layer_terms.size() == (options_.z_every_layer ? layers.size() - 1 : 0),
+                  "VectorField: condition.layer_terms does not match z_every_layer");
   detail::require_shape(rotation, "VectorField: rotation", {-1, 3, 3});
   const int64_t g = rotation.size(0);
   detail::require_shape(position, "VectorField: position", {g, 3});
@@ -69,16 +84,25 @@ Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
   const auto pose_weights = torch::cat({lift->weight.narrow(1, zc, kPoseVectors),
                                         first.feature->weight.narrow(1, zc, kPoseVectors),
                                         first.direction->weight.narrow(1, zc, kPoseVectors)});
+  const auto keep_z = keep.to(torch::kFloat).view({g, 1, 1});
   const auto terms =
-      torch::linear(pose, pose_weights) +
-      keep.to(torch::kFloat).view({g, 1, 1}) * condition.z_terms.index_select(0, object_index);
+      torch::linear(pose, pose_weights) + keep_z * condition.z_terms.index_select(0, object_index);
   const auto lifted = time.view({g, 1, 1}) * terms.narrow(2, 0, 1);  // t·f_equi, [G, 3, 1]
   const auto time_weights = torch::cat({first.feature->weight.select(1, zc + kPoseVectors),
                                         first.direction->weight.select(1, zc + kPoseVectors)});
   const auto both = terms.narrow(2, 1, 2 * hidden) + lifted * time_weights;
-  auto h = vn_leaky_relu_packed(both, hidden, first.slope).transpose(1, 2);
-  for (std::size_t l = 1; l < layers.size(); ++l) h = layers[l]->forward(h);
-  const auto velocity = out->forward(h);  // [G, 2, 3]
+  auto h = vn_leaky_relu_packed(both, hidden, first.slope);  // channels last, [G, 3, ·]
+  for (std::size_t l = 1; l < layers.size(); ++l) {
+    const auto& layer = *layers[l];
+    const int64_t in = h.size(2);
+    auto packed = torch::linear(h, torch::cat({layer.feature->weight.narrow(1, 0, in),
+                                               layer.direction->weight.narrow(1, 0, in)}));
+    if (options_.z_every_layer) {
+      packed = packed + keep_z * condition.layer_terms[l - 1].index_select(0, object_index);
+    }
+    h = vn_leaky_relu_packed(packed, layer.feature->weight.size(0), layer.slope);
+  }
+  const auto velocity = out->forward(h.transpose(1, 2));  // [G, 2, 3]
   return {velocity.select(1, 0), velocity.select(1, 1)};
 }
 

@@ -89,7 +89,9 @@ json to_json(const TrainConfig& c) {
               {"points", e.points},
               {"slope", e.slope}}},
             {"field",
-             {{"hidden_widths", c.model.field.hidden_widths}, {"slope", c.model.field.slope}}}}},
+             {{"hidden_widths", c.model.field.hidden_widths},
+              {"slope", c.model.field.slope},
+              {"z_every_layer", c.model.field.z_every_layer}}}}},
           {"data",
            {{"objects_per_step", c.data.objects_per_step},
             {"grasps_per_object", c.data.grasps_per_object},
@@ -136,9 +138,10 @@ TrainConfig train_config_from_json(const json& j) {
     }
     if (m.contains("field")) {
       const json& f = m["field"];
-      only(f, {"hidden_widths", "slope"}, "model.field.");
+      only(f, {"hidden_widths", "slope", "z_every_layer"}, "model.field.");
       read(f, "hidden_widths", c.model.field.hidden_widths, "model.field.");
       read(f, "slope", c.model.field.slope, "model.field.");
+      read(f, "z_every_layer", c.model.field.z_every_layer, "model.field.");
     }
   }
   if (j.contains("data")) {
