@@ -88,6 +88,18 @@ TEST_F(VnLayersTest, SharedDirectionBroadcastsOneVector) {
   EXPECT_TRUE(torch::allclose(layer(v), reference_leaky_relu(q, d, layer->slope), 1e-5, 1e-6));
 }
 
+TEST_F(VnLayersTest, ChannelsLastPrefixPlusTheRestsTermMatchesTheFullInput) {
+  VNLinearLeakyReLU layer(7, 4);
+  const auto v = torch::randn({6, 7, 3});
+  const auto x = v.transpose(1, 2);  // [6, 3, 7]
+  const auto rest = torch::linear(x.narrow(2, 3, 4), layer->packed_weight(3, 4));
+  const auto split = layer->forward_channels_last(x.narrow(2, 0, 3), rest);
+  EXPECT_TRUE(torch::allclose(split.transpose(1, 2), layer(v), 1e-5, 1e-6));
+  EXPECT_TRUE(torch::allclose(layer->forward_channels_last(x).transpose(1, 2), layer(v)));
+  EXPECT_THROW(layer->forward_channels_last(torch::randn({6, 3, 8})), Error);
+  EXPECT_THROW(layer->forward_channels_last(torch::randn({6, 7, 3})), Error);
+}
+
 TEST_F(VnLayersTest, PackedLeakyReLUMatchesTheReferenceAndItsGradients) {
   for (const int64_t directions : {int64_t{7}, int64_t{1}}) {
     const auto q = torch::randn({50, 7, 3}, torch::requires_grad());

@@ -35,18 +35,14 @@ ObjectCondition VectorFieldImpl::condition(const torch::Tensor& z) const {
   const int64_t zc = options_.z_channels;
   detail::require_shape(z, "VectorField::condition: z", {-1, zc, 3});
   const auto& first = *layers.front();
-  const auto weights =
-      torch::cat({lift->weight.narrow(1, 0, zc), first.feature->weight.narrow(1, 0, zc),
-                  first.direction->weight.narrow(1, 0, zc)});
+  const auto weights = torch::cat({lift->weight.narrow(1, 0, zc), first.packed_weight(0, zc)});
   const auto z_last = z.transpose(1, 2);
   ObjectCondition condition{torch::linear(z_last, weights), {}};
   if (options_.z_every_layer) {
     for (std::size_t l = 1; l < layers.size(); ++l) {
       const auto& layer = *layers[l];
       const int64_t in = options_.hidden_widths[l - 1];
-      condition.layer_terms.push_back(
-          torch::linear(z_last, torch::cat({layer.feature->weight.narrow(1, in, zc),
-                                            layer.direction->weight.narrow(1, in, zc)})));
+      condition.layer_terms.push_back(torch::linear(z_last, layer.packed_weight(in, zc)));
     }
   }
   return condition;
@@ -81,26 +77,21 @@ Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
   // condition) plus the pose vectors' terms, then the lifted time's.
   const auto& first = *layers.front();
   const auto pose = torch::cat({rotation, position.unsqueeze(2)}, 2);  // [G, 3, 4]: r1 r2 r3 p
-  const auto pose_weights = torch::cat({lift->weight.narrow(1, zc, kPoseVectors),
-                                        first.feature->weight.narrow(1, zc, kPoseVectors),
-                                        first.direction->weight.narrow(1, zc, kPoseVectors)});
+  const auto pose_weights =
+      torch::cat({lift->weight.narrow(1, zc, kPoseVectors), first.packed_weight(zc, kPoseVectors)});
   const auto keep_z = keep.to(torch::kFloat).view({g, 1, 1});
   const auto terms =
       torch::linear(pose, pose_weights) + keep_z * condition.z_terms.index_select(0, object_index);
   const auto lifted = time.view({g, 1, 1}) * terms.narrow(2, 0, 1);  // t·f_equi, [G, 3, 1]
-  const auto time_weights = torch::cat({first.feature->weight.select(1, zc + kPoseVectors),
-                                        first.direction->weight.select(1, zc + kPoseVectors)});
-  const auto both = terms.narrow(2, 1, 2 * hidden) + lifted * time_weights;
+  const auto both = terms.narrow(2, 1, 2 * hidden) +
+                    torch::linear(lifted, first.packed_weight(zc + kPoseVectors, 1));
   auto h = vn_leaky_relu_packed(both, hidden, first.slope);  // channels last, [G, 3, ·]
   for (std::size_t l = 1; l < layers.size(); ++l) {
-    const auto& layer = *layers[l];
-    const int64_t in = h.size(2);
-    auto packed = torch::linear(h, torch::cat({layer.feature->weight.narrow(1, 0, in),
-                                               layer.direction->weight.narrow(1, 0, in)}));
-    if (options_.z_every_layer) {
-      packed = packed + keep_z * condition.layer_terms[l - 1].index_select(0, object_index);
-    }
-    h = vn_leaky_relu_packed(packed, layer.feature->weight.size(0), layer.slope);
+    // With z_every_layer, z's term (gathered per grasp) joins h's before the activation.
+    const auto z_term = options_.z_every_layer
+                            ? keep_z * condition.layer_terms[l - 1].index_select(0, object_index)
+                            : torch::Tensor();
+    h = layers[l]->forward_channels_last(h, z_term);
   }
   const auto velocity = out->forward(h.transpose(1, 2));  // [G, 2, 3]
   return {velocity.select(1, 0), velocity.select(1, 1)};

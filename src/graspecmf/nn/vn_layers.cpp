@@ -191,11 +191,25 @@ VNLinearLeakyReLUImpl::VNLinearLeakyReLUImpl(int64_t in_channels, int64_t out_ch
 
 torch::Tensor VNLinearLeakyReLUImpl::forward(const torch::Tensor& v) const {
   require_vn_feature(v, feature->weight.size(1), "VNLinearLeakyReLU");
-  // One GEMM for both maps, channels last; the result is handed back as [..., out, 3].
-  const int64_t out = feature->weight.size(0);
-  const auto both =
-      torch::linear(v.transpose(-1, -2), torch::cat({feature->weight, direction->weight}));
-  return vn_leaky_relu_packed(both, out, slope).transpose(-1, -2);
+  return forward_channels_last(v.transpose(-1, -2)).transpose(-1, -2);
+}
+
+torch::Tensor VNLinearLeakyReLUImpl::forward_channels_last(const torch::Tensor& x,
+                                                           const torch::Tensor& extra) const {
+  const int64_t in = feature->weight.size(1), out = feature->weight.size(0);
+  detail::require(
+      x.defined() && x.scalar_type() == torch::kFloat && x.dim() >= 2 && x.size(-2) == 3 &&
+          x.size(-1) >= 1 && x.size(-1) <= in,
+      "VNLinearLeakyReLU: x must be a float32 tensor [..., 3, ≤ " + std::to_string(in) + "]");
+  // One GEMM for both maps, then the other channels' term, then the fused activation.
+  auto packed = torch::linear(x, packed_weight(0, x.size(-1)));
+  if (extra.defined()) packed = packed + extra;
+  return vn_leaky_relu_packed(packed, out, slope);
+}
+
+torch::Tensor VNLinearLeakyReLUImpl::packed_weight(int64_t first, int64_t count) const {
+  return torch::cat(
+      {feature->weight.narrow(1, first, count), direction->weight.narrow(1, first, count)});
 }
 
 }  // namespace graspecmf::nn

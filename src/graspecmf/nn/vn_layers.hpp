@@ -39,6 +39,12 @@ class VNLinearLeakyReLUImpl : public torch::nn::Module {
   VNLinearLeakyReLUImpl(int64_t in_channels, int64_t out_channels, bool shared_direction = false,
                         double slope = kDefaultSlope);
   torch::Tensor forward(const torch::Tensor& v) const;
+  // Channels last: x [..., 3, m] holds the first m ≤ in input channels; `extra` (or undefined) is
+  // the other channels' pre-activation term [..., 3, out + D]. Returns [..., 3, out].
+  torch::Tensor forward_channels_last(const torch::Tensor& x,
+                                      const torch::Tensor& extra = {}) const;
+  // [out + D, count]: W_f's then W_d's columns for the input channels [first, first + count).
+  torch::Tensor packed_weight(int64_t first, int64_t count) const;
 
   VNLinear feature{nullptr};    // W_f: in → out
   VNLinear direction{nullptr};  // W_d: in → out, or in → 1 when shared
