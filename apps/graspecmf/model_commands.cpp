@@ -21,6 +21,7 @@
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/point_cloud_io.hpp"
+#include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/metrics/paired_comparison.hpp"
@@ -210,20 +211,34 @@ std::vector<lie::Pose> first(const std::vector<lie::Pose>& grasps, std::size_t c
           grasps.begin() + static_cast<std::ptrdiff_t>(std::min(count, grasps.size()))};
 }
 
-// Simulated success of the first `count` grasps of each list, summed over the lists.
-sim::SuccessCount simulated_success(const sim::SceneObject& scene,
-                                    const std::vector<std::vector<lie::Pose>>& lists,
-                                    std::size_t count, const sim::TrialConfig& config,
-                                    int threads) {
-  sim::SuccessCount total;
+// Simulated outcomes of the first `count` grasps of each list, summed over the lists.
+sim::GraspOutcomes simulated_outcomes(const sim::SceneObject& scene,
+                                      const geometry::MeshRayCaster& mesh,
+                                      const std::vector<std::vector<lie::Pose>>& lists,
+                                      std::size_t count, const sim::TrialConfig& config,
+                                      int threads) {
+  sim::GraspOutcomes total;
   for (const std::vector<lie::Pose>& grasps : lists) {
-    total += sim::count_successes(scene, first(grasps, count), config, threads);
+    total += sim::grasp_outcomes(scene, mesh, first(grasps, count), config, threads);
   }
   return total;
 }
 
 nlohmann::json success_json(const sim::SuccessCount& c) {
   return {{"successes", c.successes}, {"trials", c.trials}, {"rate", c.rate()}};
+}
+
+// The success count's JSON plus the collision rate and the success of the collision-free grasps.
+nlohmann::json outcomes_json(const sim::GraspOutcomes& o) {
+  json j = success_json(o.all);
+  j["collision_rate"] = o.collision_rate();
+  j["collision_free"] = success_json(o.collision_free);
+  return j;
+}
+
+// "71.0 % (12 % collide)" for a table cell.
+std::string outcomes_cell(const sim::GraspOutcomes& o) {
+  return fmt::format("{:.1f} % ({:.0f} % collide)", 100 * o.all.rate(), 100 * o.collision_rate());
 }
 
 nlohmann::json comparison_json(const metrics::PairedComparison& c) {
@@ -256,7 +271,7 @@ void run_evaluate(const EvaluateArgs& a) {
   double total = 0, total_random = 0, total_floor = 0;
   std::size_t floors = 0;  // objects with a sampling floor (≥ 2n successful grasps)
   std::vector<double> model_emds, nearest_emds;
-  sim::SuccessCount model_success, nearest_success;
+  sim::GraspOutcomes model_success, nearest_success;
   std::vector<double> model_failure_rates, nearest_failure_rates;  // lower is better, as EMDs
   std::string table =
       a.baselines ? "| object | n | EMD (3 rotations) | mean | random | nearest training object | "
@@ -299,19 +314,20 @@ void run_evaluate(const EvaluateArgs& a) {
       const sim::SceneObject scene = sim::make_scene_object(
           object.mesh, object.info, trial_config, {},
           a.cache.empty() ? sim::default_decomposition_cache() : fs::path(a.cache));
-      const sim::SuccessCount s =
-          simulated_success(scene, e.generated, a.success, trial_config, a.threads);
-      entry["success"] = success_json(s);
-      table += fmt::format(" {:.1f} % |", 100 * s.rate());
+      const geometry::MeshRayCaster mesh(object.mesh);
+      const sim::GraspOutcomes s =
+          simulated_outcomes(scene, mesh, e.generated, a.success, trial_config, a.threads);
+      entry["success"] = outcomes_json(s);
+      table += " " + outcomes_cell(s) + " |";
       model_success += s;
-      model_failure_rates.push_back(1 - s.rate());
+      model_failure_rates.push_back(1 - s.all.rate());
       if (baseline) {
-        const sim::SuccessCount ns = simulated_success(scene, {baseline->nearest_grasps}, a.success,
-                                                       trial_config, a.threads);
-        entry["nearest_success"] = success_json(ns);
-        table += fmt::format(" {:.1f} % |", 100 * ns.rate());
+        const sim::GraspOutcomes ns = simulated_outcomes(scene, mesh, {baseline->nearest_grasps},
+                                                         a.success, trial_config, a.threads);
+        entry["nearest_success"] = outcomes_json(ns);
+        table += " " + outcomes_cell(ns) + " |";
         nearest_success += ns;
-        nearest_failure_rates.push_back(1 - ns.rate());
+        nearest_failure_rates.push_back(1 - ns.all.rate());
       }
     }
     table += "\n";
@@ -351,20 +367,23 @@ void run_evaluate(const EvaluateArgs& a) {
     }
   }
   if (a.success > 0) {
-    report["success"] = success_json(model_success);
-    summary +=
-        fmt::format("; simulated success {:.1f} % ({} of {} grasps)", 100 * model_success.rate(),
-                    model_success.successes, model_success.trials);
+    report["success"] = outcomes_json(model_success);
+    summary += fmt::format(
+        "; simulated success {:.1f} % ({} of {} grasps; {:.1f} % start in collision with the "
+        "object, {:.1f} % success among the others)",
+        100 * model_success.all.rate(), model_success.all.successes, model_success.all.trials,
+        100 * model_success.collision_rate(), 100 * model_success.collision_free.rate());
     if (a.baselines) {
       // Failure rates are lower-is-better, so the comparison reads like the EMD one.
       const metrics::PairedComparison c =
           metrics::compare_paired(model_failure_rates, nearest_failure_rates, a.seed);
-      report["nearest_success"] = success_json(nearest_success);
+      report["nearest_success"] = outcomes_json(nearest_success);
       report["nearest_success_comparison"] = comparison_json(c);
       summary += fmt::format(
-          " against {:.1f} % for the nearest training object's grasps (higher on {} objects, "
-          "lower on {}, sign test p = {:.3g})",
-          100 * nearest_success.rate(), c.wins, c.losses, c.sign_test_p);
+          " against {:.1f} % for the nearest training object's grasps ({:.1f} % in collision; "
+          "the model is higher on {} objects, lower on {}, sign test p = {:.3g})",
+          100 * nearest_success.all.rate(), 100 * nearest_success.collision_rate(), c.wins,
+          c.losses, c.sign_test_p);
     }
   }
   std::cout << table << summary << "\n";

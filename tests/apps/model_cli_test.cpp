@@ -84,7 +84,14 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_DOUBLE_EQ(rate, object["success"]["successes"].get<double>() / 6.0);
   EXPECT_DOUBLE_EQ(report["nearest_success_comparison"]["mean_difference"].get<double>(),
                    rate - object["nearest_success"]["rate"].get<double>());
+  // The collision-free part is a subset, and the rate its complement's fraction.
+  const auto& clear = object["success"]["collision_free"];
+  EXPECT_LE(clear["trials"].get<int>(), 6);
+  EXPECT_LE(clear["successes"].get<int>(), object["success"]["successes"].get<int>());
+  EXPECT_DOUBLE_EQ(object["success"]["collision_rate"].get<double>(),
+                   1.0 - clear["trials"].get<double>() / 6.0);
   EXPECT_NE(evaluated.out.find("simulated success"), std::string::npos) << evaluated.out;
+  EXPECT_NE(evaluated.out.find("start in collision"), std::string::npos) << evaluated.out;
 }
 
 TEST(CliModel, BadInput) {

@@ -36,13 +36,40 @@ TEST(RunTrials, SameLabelsOnOneAndTwoThreads) {
     EXPECT_EQ(one[i].closing_angular, two[i].closing_angular) << i;
   }
   EXPECT_THROW(run_trials(object, grasps, TrialConfig{}, 0), Error);
-  // count_successes counts the same trials' successes.
-  std::size_t successes = 0;
-  for (const TrialResult& r : one) successes += r.success ? 1 : 0;
-  const SuccessCount count = count_successes(object, grasps, TrialConfig{}, 2);
-  EXPECT_EQ(count.successes, successes);
-  EXPECT_EQ(count.trials, grasps.size());
-  EXPECT_DOUBLE_EQ(count.rate(), static_cast<double>(successes) / 6.0);
+}
+
+TEST(GraspOutcomes, CountsSuccessesAndTheGraspsClearOfTheObject) {
+  const SceneObject object = testing::box_object();
+  const geometry::MeshRayCaster mesh(object.parts[0]);
+  // Pads at mid-height around the box (clear), then the palm sunk into its top and a finger
+  // pushed into its side (both in collision).
+  std::vector<lie::Pose> grasps;
+  for (const Vec3& p :
+       {Vec3(-0.01, 0, 0.05 + 0.1034), Vec3(0, 0, 0.05 + 0.1034), Vec3(0.01, 0, 0.05 + 0.1034),
+        Vec3(0, 0, 0.03 + 0.1034), Vec3(0.03, 0, 0.05 + 0.1034)}) {
+    lie::Pose g;
+    g.R = lie::so3_exp(Vec3(M_PI, 0, 0));
+    g.p = p;
+    grasps.push_back(g);
+  }
+  const std::vector<TrialResult> results = run_trials(object, grasps, TrialConfig{}, 1);
+  const GraspOutcomes outcomes = grasp_outcomes(object, mesh, grasps, TrialConfig{}, 2);
+  std::size_t successes = 0, clear_successes = 0;
+  for (std::size_t i = 0; i < results.size(); ++i) {
+    successes += results[i].success ? 1 : 0;
+    clear_successes += i < 3 && results[i].success ? 1 : 0;
+  }
+  EXPECT_EQ(outcomes.all.trials, 5U);
+  EXPECT_EQ(outcomes.all.successes, successes);
+  EXPECT_EQ(outcomes.collision_free.trials, 3U);
+  EXPECT_EQ(outcomes.collision_free.successes, clear_successes);
+  EXPECT_GT(clear_successes, 0U);
+  EXPECT_DOUBLE_EQ(outcomes.collision_rate(), 0.4);
+  GraspOutcomes twice = outcomes;
+  twice += outcomes;
+  EXPECT_EQ(twice.all.trials, 10U);
+  EXPECT_EQ(twice.collision_free.successes, 2 * clear_successes);
+  EXPECT_DOUBLE_EQ(GraspOutcomes{}.collision_rate(), 0.0);
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/gripper/panda.hpp"
 
 namespace graspecmf::sim {
 
@@ -42,14 +43,21 @@ std::vector<TrialResult> run_trials(const SceneObject& object, const std::vector
   return results;
 }
 
-SuccessCount count_successes(const SceneObject& object, const std::vector<lie::Pose>& grasps,
-                             const TrialConfig& config, int threads) {
-  SuccessCount count;
-  for (const TrialResult& r : run_trials(object, grasps, config, threads)) {
-    count.successes += r.success ? 1 : 0;
+GraspOutcomes grasp_outcomes(const SceneObject& object, const geometry::MeshRayCaster& mesh,
+                             const std::vector<lie::Pose>& grasps, const TrialConfig& config,
+                             int threads) {
+  const std::vector<TrialResult> results = run_trials(object, grasps, config, threads);
+  GraspOutcomes outcomes;
+  for (std::size_t i = 0; i < grasps.size(); ++i) {
+    const std::size_t success = results[i].success ? 1 : 0;
+    outcomes.all.successes += success;
+    ++outcomes.all.trials;
+    if (!gripper::in_collision(mesh, grasps[i])) {
+      outcomes.collision_free.successes += success;
+      ++outcomes.collision_free.trials;
+    }
   }
-  count.trials = grasps.size();
-  return count;
+  return outcomes;
 }
 
 data::GraspQualities acronym_qualities(const std::vector<TrialResult>& results) {
