@@ -23,6 +23,7 @@
 #include "graspecmf/geometry/point_cloud_io.hpp"
 #include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/gripper/cloud_collision.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/metrics/paired_comparison.hpp"
 #include "graspecmf/sim/batch.hpp"
@@ -98,19 +99,27 @@ struct SampleArgs {
   std::string model, mesh, points, acronym, mesh_root, out;
   double scale = 1.0;
   SamplingOverrides sampling;
+  bool reject_collisions = false;
   std::size_t num = 100;
   int threads = kDefaultThreads;
   std::uint64_t seed = 0;
 };
 
-// The input cloud in metres and the object record to write beside the grasps.
-std::pair<std::vector<Eigen::Vector3d>, data::AcronymObjectInfo> sample_input(const SampleArgs& a,
-                                                                              std::size_t points) {
+// The object as sample sees it: the model's input cloud in metres, the points that
+// --reject-collisions checks the hand against, and the record to write beside the grasps.
+struct SampleInput {
+  std::vector<Eigen::Vector3d> cloud, collision_points;
+  data::AcronymObjectInfo info;
+};
+
+SampleInput sample_input(const SampleArgs& a, std::size_t points) {
   const int sources = !a.mesh.empty() + !a.points.empty() + !a.acronym.empty();
   if (sources != 1) throw Error("sample: give exactly one of --mesh, --points or --acronym");
-  data::AcronymObjectInfo info;
+  SampleInput input;
+  data::AcronymObjectInfo& info = input.info;
   if (!a.points.empty()) {
     std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
+    if (a.reject_collisions) input.collision_points = cloud;  // every point of the file
     // A seeded subset when the file has more points than the model was trained with.
     Rng rng(a.seed);
     for (std::size_t i = 0; cloud.size() > points && i < points; ++i) {
@@ -118,7 +127,8 @@ std::pair<std::vector<Eigen::Vector3d>, data::AcronymObjectInfo> sample_input(co
     }
     cloud.resize(std::min(cloud.size(), points));
     info.file = a.points;
-    return {cloud, info};
+    input.cloud = std::move(cloud);
+    return input;
   }
   geometry::TriangleMesh mesh;
   if (!a.mesh.empty()) {
@@ -131,7 +141,11 @@ std::pair<std::vector<Eigen::Vector3d>, data::AcronymObjectInfo> sample_input(co
     mesh = geometry::scaled(
         geometry::read_mesh(data::find_object_mesh(a.acronym, info.file, a.mesh_root)), info.scale);
   }
-  return {geometry::sample_surface(mesh, points, a.seed).points, info};
+  input.cloud = geometry::sample_surface(mesh, points, a.seed).points;
+  if (a.reject_collisions) {
+    input.collision_points = gripper::collision_cloud(mesh, a.seed);
+  }
+  return input;
 }
 
 void run_sample(const SampleArgs& a) {
@@ -139,23 +153,27 @@ void run_sample(const SampleArgs& a) {
   const train::TrainedModel trained = train::load_trained_model(a.model);
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
-  const auto [cloud, info] = sample_input(a, points);
-  if (cloud.size() < static_cast<std::size_t>(trained.config.model.encoder.k)) {
+  const SampleInput input = sample_input(a, points);
+  if (input.cloud.size() < static_cast<std::size_t>(trained.config.model.encoder.k)) {
     throw Error(fmt::format("sample: the cloud has {} points; the model needs at least {}",
-                            cloud.size(), trained.config.model.encoder.k));
+                            input.cloud.size(), trained.config.model.encoder.k));
   }
+  std::optional<gripper::CloudCollisionChecker> checker;
+  if (a.reject_collisions) checker.emplace(input.collision_points);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<lie::Pose> grasps =
-      train::sample_grasps(trained.model, cloud, trained.config, a.num, settings, a.seed);
+      train::sample_grasps(trained.model, input.cloud, trained.config, a.num, settings, a.seed,
+                           checker ? &*checker : nullptr);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   data::AcronymGraspFile record;
   for (const lie::Pose& g : grasps) record.transforms.push_back(g.matrix());
   record.gripper_configuration = 0.5 * gripper::panda::kMaxOpening;
-  record.object = info;
+  record.object = input.info;
   data::write_acronym_file(record, a.out);
-  std::cout << fmt::format("{} grasps ({} {} steps, guidance {}) in {:.2f} s → {}\n", a.num,
-                           settings.solver, settings.steps, settings.guidance, seconds, a.out);
+  std::cout << fmt::format("{} grasps ({} {} steps, guidance {}{}) in {:.2f} s → {}\n", a.num,
+                           settings.solver, settings.steps, settings.guidance,
+                           a.reject_collisions ? ", colliding ones rejected" : "", seconds, a.out);
 }
 
 // ---- evaluate ----
@@ -163,7 +181,7 @@ void run_sample(const SampleArgs& a) {
 struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
   std::string sim_config, cache;  // for --success
-  bool baselines = false;
+  bool baselines = false, reject_collisions = false;
   SamplingOverrides sampling;
   std::size_t num = 0;
   std::size_t success = 0;  // grasps simulated per object and rotation; 0: no simulation
@@ -285,15 +303,16 @@ void run_evaluate(const EvaluateArgs& a) {
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
-    const train::ObjectEvaluation e = train::evaluate_object(
-        trained.model, object, trained.config, train::test_rotations(), n, settings, a.seed);
+    const train::ObjectEvaluation e =
+        train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
+                               settings, a.seed, a.reject_collisions);
     json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
     table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
     std::optional<train::BaselineEvaluation> baseline;
     if (a.baselines) {
-      const train::BaselineEvaluation& b =
-          baseline.emplace(train::evaluate_baselines(object, *shapes, n, a.seed));
+      const train::BaselineEvaluation& b = baseline.emplace(
+          train::evaluate_baselines(object, *shapes, n, a.seed, a.reject_collisions));
       entry["random_emd"] = b.random_emd;
       entry["nearest_training_object"] = b.nearest;
       entry["nearest_emd"] = b.nearest_emd;
@@ -337,14 +356,16 @@ void run_evaluate(const EvaluateArgs& a) {
   }
   progress.finish();
   const double count = static_cast<double>(objects.size());
-  json report = {
-      {"model", a.model},
-      {"step", trained.step},
-      {"sampling",
-       {{"solver", settings.solver}, {"steps", settings.steps}, {"guidance", settings.guidance}}},
-      {"seed", a.seed},
-      {"objects", per_object},
-      {"mean_emd", total / count}};
+  json report = {{"model", a.model},
+                 {"step", trained.step},
+                 {"sampling",
+                  {{"solver", settings.solver},
+                   {"steps", settings.steps},
+                   {"guidance", settings.guidance},
+                   {"reject_collisions", a.reject_collisions}}},
+                 {"seed", a.seed},
+                 {"objects", per_object},
+                 {"mean_emd", total / count}};
   std::string summary =
       fmt::format("mean EMD over {} objects: {:.4f}", objects.size(), total / count);
   if (a.baselines) {
@@ -391,8 +412,9 @@ void run_evaluate(const EvaluateArgs& a) {
   if (!a.markdown.empty()) {
     write_text_atomically(
         a.markdown,
-        fmt::format("# EMD of {} (step {}; {}-{}, guidance {})\n\n{}\n{}\n", a.model, trained.step,
-                    settings.solver, settings.steps, settings.guidance, table, summary));
+        fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", a.model,
+                    trained.step, settings.solver, settings.steps, settings.guidance,
+                    a.reject_collisions ? ", colliding grasps rejected" : "", table, summary));
   }
 }
 
@@ -420,6 +442,10 @@ void add_model_commands(CLI::App& app) {
   sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
   sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
   add_sampling_options(sample_cmd, s->sampling);
+  sample_cmd->add_flag("--reject-collisions", s->reject_collisions,
+                       "Keep only grasps whose open hand holds none of the object's points (every "
+                       "point of --points, or a dense surface sample of the mesh); not in the "
+                       "paper");
   sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
   sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
@@ -434,6 +460,9 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--mesh-root", e->mesh_root, "Folder the ACRONYM file's mesh is in");
   eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
   add_sampling_options(eval_cmd, e->sampling);
+  eval_cmd->add_flag("--reject-collisions", e->reject_collisions,
+                     "Keep only generated grasps (and, with --baselines, nearest-object grasps) "
+                     "whose open hand holds none of a dense surface sample of the object");
   eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
   eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   eval_cmd->add_flag("--baselines", e->baselines,

@@ -7,6 +7,8 @@
 #include "../train/tiny_dataset.hpp"
 #include "cli_support.hpp"
 #include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/gripper/cloud_collision.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -45,6 +47,21 @@ TEST(CliModel, TrainSampleEvaluate) {
   const graspecmf::data::AcronymGraspFile record = graspecmf::data::read_acronym_file(out);
   EXPECT_EQ(record.size(), 7u);
   EXPECT_EQ(record.object.file, (data / "meshes/Box/b0.obj").string());
+
+  // --reject-collisions: every grasp's open hand is clear of the dense surface sample it checks.
+  const auto clear_run =
+      run("sample --model " + run_dir + " --mesh " + (data / "meshes/Box/b0.obj").string() +
+              " --num 7 --seed 3 --reject-collisions --out " + out,
+          dir);
+  ASSERT_EQ(clear_run.exit_code, 0) << clear_run.err;
+  EXPECT_NE(clear_run.out.find("colliding ones rejected"), std::string::npos) << clear_run.out;
+  const graspecmf::gripper::CloudCollisionChecker checker(graspecmf::gripper::collision_cloud(
+      graspecmf::geometry::read_mesh((data / "meshes/Box/b0.obj").string()), 3));
+  const graspecmf::data::AcronymGraspFile clear_record = graspecmf::data::read_acronym_file(out);
+  ASSERT_EQ(clear_record.size(), 7u);
+  for (const auto& T : clear_record.transforms) {
+    EXPECT_FALSE(checker.in_collision(graspecmf::lie::Pose::from_matrix(T)));
+  }
 
   const auto evaluated =
       run("evaluate --model " + run_dir + " --data " + data.string() +
@@ -92,6 +109,18 @@ TEST(CliModel, TrainSampleEvaluate) {
                    1.0 - clear["trials"].get<double>() / 6.0);
   EXPECT_NE(evaluated.out.find("simulated success"), std::string::npos) << evaluated.out;
   EXPECT_NE(evaluated.out.find("start in collision"), std::string::npos) << evaluated.out;
+
+  // --reject-collisions is recorded with the sampling settings. Every grasp of the nearest box
+  // collides with the val box here, so the baseline fails with one clear error.
+  const std::string reject = "evaluate --model " + run_dir + " --data " + data.string() +
+                             " --split val --num 4 --reject-collisions --out " +
+                             (dir / "rejected.json").string();
+  const auto rejected = run(reject, dir);
+  ASSERT_EQ(rejected.exit_code, 0) << rejected.err;
+  expect_one_error_line(run(reject + " --baselines", dir), "is clear of it");
+  const nlohmann::json rejected_report = nlohmann::json::parse(read_file(dir / "rejected.json"));
+  EXPECT_TRUE(rejected_report["sampling"]["reject_collisions"].get<bool>());
+  EXPECT_FALSE(report["sampling"]["reject_collisions"].get<bool>());
 }
 
 TEST(CliModel, BadInput) {

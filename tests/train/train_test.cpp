@@ -143,6 +143,39 @@ TEST(Sampling, GraspsFollowTheCloudsPosition) {
   EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9), Error);
 }
 
+TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
+  torch::manual_seed(1);
+  const TrainConfig config = tiny_config();
+  const nn::GraspFlowModel model(config.model);
+  std::vector<Eigen::Vector3d> cloud;
+  Rng rng(4);
+  for (int i = 0; i < 40; ++i)
+    cloud.push_back(0.05 * Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()));
+  const gripper::CloudCollisionChecker checker(cloud);
+  const auto all = sample_grasps(model, cloud, config, 40, config.sampling, 9);
+  const auto clear = sample_grasps(model, cloud, config, 40, config.sampling, 9, &checker);
+  ASSERT_EQ(clear.size(), 40U);
+  std::size_t kept = 0;
+  for (const lie::Pose& g : all) {
+    if (checker.in_collision(g)) continue;
+    // The first round's clear grasps come first, in order.
+    EXPECT_LT((clear[kept].p - g.p).norm(), 1e-12);
+    ++kept;
+  }
+  EXPECT_GT(kept, 0U);
+  EXPECT_LT(kept, 40U);
+  for (const lie::Pose& g : clear) EXPECT_FALSE(checker.in_collision(g));
+  // Space filled with points leaves no clear grasp: one clear error.
+  std::vector<Eigen::Vector3d> filled;
+  for (int x = -30; x <= 30; ++x) {
+    for (int y = -30; y <= 30; ++y) {
+      for (int z = -30; z <= 30; ++z) filled.push_back(0.02 * Eigen::Vector3d(x, y, z));
+    }
+  }
+  const gripper::CloudCollisionChecker everywhere(filled);
+  EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9, &everywhere), Error);
+}
+
 // A model's parameters, flattened into one tensor.
 at::Tensor flat_parameters(const nn::GraspFlowModel& model) {
   std::vector<at::Tensor> flat;

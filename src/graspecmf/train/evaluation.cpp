@@ -8,6 +8,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/gripper/cloud_collision.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 #include "graspecmf/metrics/baselines.hpp"
@@ -15,6 +16,18 @@
 #include "graspecmf/train/grasp_sampling.hpp"
 
 namespace graspecmf::train {
+namespace {
+
+// The points rotated by g.
+std::vector<Eigen::Vector3d> rotated(const std::vector<Eigen::Vector3d>& points,
+                                     const Eigen::Matrix3d& g) {
+  std::vector<Eigen::Vector3d> result;
+  result.reserve(points.size());
+  for (const Eigen::Vector3d& q : points) result.push_back(g * q);
+  return result;
+}
+
+}  // namespace
 
 std::vector<Eigen::Matrix3d> test_rotations() {
   return lie::super_fibonacci_rotations(3);
@@ -37,21 +50,27 @@ std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::si
 ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
-                                 const SamplingSettings& settings, std::uint64_t seed) {
+                                 const SamplingSettings& settings, std::uint64_t seed,
+                                 bool reject_collisions) {
   ObjectEvaluation result;
   result.name = object.name;
   const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
   result.n = reference.size();
   const geometry::SurfacePoints cloud = geometry::sample_surface(
       object.mesh, static_cast<std::size_t>(config.model.encoder.points), seed + 1);
+  const std::vector<Eigen::Vector3d> obstacles = reject_collisions
+                                                     ? gripper::collision_cloud(object.mesh, seed)
+                                                     : std::vector<Eigen::Vector3d>{};
   for (std::size_t r = 0; r < rotations.size(); ++r) {
     const Eigen::Matrix3d& g = rotations[r];
-    std::vector<Eigen::Vector3d> rotated_cloud;
-    for (const Eigen::Vector3d& q : cloud.points) rotated_cloud.push_back(g * q);
+    const std::vector<Eigen::Vector3d> rotated_cloud = rotated(cloud.points, g);
     std::vector<lie::Pose> rotated_reference;
     for (const lie::Pose& x : reference) rotated_reference.push_back({g * x.R, g * x.p});
+    std::optional<gripper::CloudCollisionChecker> checker;
+    if (reject_collisions) checker.emplace(rotated(obstacles, g));
     const std::vector<lie::Pose> generated =
-        sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r);
+        sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
+                      checker ? &*checker : nullptr);
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
     std::vector<lie::Pose>& kept = result.generated.emplace_back();
     for (const lie::Pose& x : generated) kept.push_back({g.transpose() * x.R, g.transpose() * x.p});
@@ -107,7 +126,7 @@ const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object
 
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed) {
+                                      std::uint64_t seed, bool reject_collisions) {
   BaselineEvaluation result;
   const std::vector<lie::Pose> shuffled = shuffled_grasps(object, seed);
   const auto slice = [&](std::size_t offset, std::size_t count) {
@@ -126,11 +145,20 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   Eigen::Vector3d centroid, neighbour_centroid;
   const data::GraspObject& nearest = training.nearest(object, centroid, neighbour_centroid);
   result.nearest = nearest.name;
-  std::vector<lie::Pose> moved = reference_grasps(nearest, result.n, seed);
-  for (lie::Pose& g : moved) g.p += centroid - neighbour_centroid;
-  const std::size_t m = std::min(moved.size(), reference.size());
+  std::vector<lie::Pose> moved;
+  std::optional<gripper::CloudCollisionChecker> checker;
+  if (reject_collisions) checker.emplace(gripper::collision_cloud(object.mesh, seed));
+  for (lie::Pose g : shuffled_grasps(nearest, seed)) {
+    if (moved.size() == result.n) break;
+    g.p += centroid - neighbour_centroid;
+    if (!checker || !checker->in_collision(g)) moved.push_back(g);
+  }
+  if (moved.empty()) {
+    throw Error(object.name + ": none of the nearest training object " + nearest.name +
+                "'s grasps is clear of it, so the nearest-object baseline has no grasps");
+  }
+  const std::size_t m = moved.size();  // n, or fewer if the nearest object has fewer
   result.nearest_n = m;
-  moved.resize(m);
   result.nearest_emd = metrics::earth_movers_distance(
       moved, std::vector<lie::Pose>(reference.begin(),
                                     reference.begin() + static_cast<std::ptrdiff_t>(m)));

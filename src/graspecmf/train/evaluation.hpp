@@ -29,12 +29,14 @@ std::vector<lie::Pose> shuffled_grasps(const data::GraspObject& object, std::uin
 std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
                                         std::uint64_t seed);
 // For each rotation g: the object's seeded cloud and reference grasps rotated by g, n grasps
-// sampled from the model for the rotated cloud, and their EMD to the rotated reference; the
-// generated grasps are kept, in the object's frame.
+// sampled from the model for the rotated cloud (with reject_collisions, only ones clear of the
+// rotated gripper::collision_cloud), and their EMD to the rotated reference; the generated grasps
+// are kept, in the object's frame.
 ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
-                                 const SamplingSettings& settings, std::uint64_t seed);
+                                 const SamplingSettings& settings, std::uint64_t seed,
+                                 bool reject_collisions = false);
 
 struct BaselineEvaluation {
   std::size_t n = 0;          // grasps compared
@@ -71,9 +73,10 @@ class TrainingShapes {
 // EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
 // and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
 // frames sit that far from the surface); and the successful grasps of the other training object
-// with the smallest Chamfer distance between centred seeded clouds. Also the sampling floor.
+// with the smallest Chamfer distance between centred seeded clouds (with reject_collisions, only
+// those whose hand is clear of the object's gripper::collision_cloud). Also the sampling floor.
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed);
+                                      std::uint64_t seed, bool reject_collisions = false);
 
 }  // namespace graspecmf::train

@@ -2,16 +2,22 @@
 
 #include <torch/torch.h>
 
+#include <algorithm>
+#include <string>
+
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/flow/sampler.hpp"
 
 namespace graspecmf::train {
 
-flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tensor& points,
-                                 const flow::PoseBatch& x0, const SamplingSettings& settings) {
+namespace {
+
+// x(1) from x0 for an object whose z terms are `condition`.
+flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
+                                    const nn::ObjectCondition& condition, const flow::PoseBatch& x0,
+                                    const SamplingSettings& settings) {
   torch::NoGradGuard no_grad;
-  const nn::ObjectCondition condition = model->condition(points.unsqueeze(0));
   const flow::ConditionalField field = [&](const flow::PoseBatch& x, const at::Tensor& t,
                                            const at::Tensor& keep) {
     const at::Tensor object = torch::zeros({x.R.size(0)}, torch::kLong);
@@ -22,10 +28,24 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
                          flow::parse_solver(settings.solver), settings.steps);
 }
 
+// The seed of sampling round r ≥ 1 (round 0 uses the caller's seed).
+std::uint64_t round_seed(std::uint64_t seed, int round) {
+  return seed ^ (0x9E3779B97F4A7C15ULL * static_cast<std::uint64_t>(round));
+}
+
+}  // namespace
+
+flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tensor& points,
+                                 const flow::PoseBatch& x0, const SamplingSettings& settings) {
+  torch::NoGradGuard no_grad;
+  return integrate_condition(model, model->condition(points.unsqueeze(0)), x0, settings);
+}
+
 std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
-                                     const SamplingSettings& settings, std::uint64_t seed) {
+                                     const SamplingSettings& settings, std::uint64_t seed,
+                                     const gripper::CloudCollisionChecker* clear_of) {
   if (cloud.empty()) throw Error("sampling needs a non-empty point cloud");
   if (n == 0) throw Error("sampling needs at least one grasp");
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -42,18 +62,33 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
       access[static_cast<int64_t>(i)][k] = static_cast<float>(scale * (cloud[i][k] - centroid[k]));
     }
   }
-  at::Generator generator = flow::make_generator(seed);
-  const flow::PoseBatch x0 =
-      flow::sample_prior(static_cast<int64_t>(n), config.prior_position_std, generator);
-  const flow::PoseBatch x1 = integrate_grasps(model, points, x0, settings);
-  const at::Tensor R = x1.R.to(torch::kDouble).contiguous();
-  const at::Tensor p = x1.p.to(torch::kDouble).contiguous();
-  std::vector<lie::Pose> grasps(n);
-  for (std::size_t g = 0; g < n; ++g) {
-    grasps[g].R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
-        R.data_ptr<double>() + 9 * g);
-    grasps[g].p =
-        Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g) / scale + centroid;
+  torch::NoGradGuard no_grad;
+  const nn::ObjectCondition condition = model->condition(points.unsqueeze(0));
+  std::vector<lie::Pose> grasps;
+  std::size_t drawn = 0;
+  for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {
+    const std::size_t count = round == 0 ? n : std::max<std::size_t>(2 * (n - grasps.size()), 64);
+    at::Generator generator = flow::make_generator(round == 0 ? seed : round_seed(seed, round));
+    const flow::PoseBatch x1 = integrate_condition(
+        model, condition,
+        flow::sample_prior(static_cast<int64_t>(count), config.prior_position_std, generator),
+        settings);
+    const at::Tensor R = x1.R.to(torch::kDouble).contiguous();
+    const at::Tensor p = x1.p.to(torch::kDouble).contiguous();
+    drawn += count;
+    for (std::size_t g = 0; g < count && grasps.size() < n; ++g) {
+      lie::Pose grasp;
+      grasp.R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
+          R.data_ptr<double>() + 9 * g);
+      grasp.p = Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g) / scale + centroid;
+      if (clear_of == nullptr || !clear_of->in_collision(grasp)) grasps.push_back(grasp);
+    }
+  }
+  if (grasps.size() < n) {
+    throw Error("only " + std::to_string(grasps.size()) + " of " + std::to_string(drawn) +
+                " sampled grasps are clear of the object's points (" + std::to_string(n) +
+                " needed) after " + std::to_string(kMaxSamplingRounds) +
+                " rounds; the cloud may not match the object the model sees");
   }
   return grasps;
 }
