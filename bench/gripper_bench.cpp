@@ -1,5 +1,6 @@
-// Collision checks of the Panda box model against the sample mug (the open-gripper filter of
-// dataset generation).
+// Collision checks of the Panda box model against the sample mug: against its mesh (the
+// open-gripper filter of dataset generation) and against a dense surface cloud of it (the
+// --reject-collisions filter of sampling).
 
 #include <benchmark/benchmark.h>
 
@@ -7,6 +8,7 @@
 
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/gripper/cloud_collision.hpp"
 #include "graspecmf/gripper/panda.hpp"
 
 namespace {
@@ -14,18 +16,39 @@ namespace fs = std::filesystem;
 
 const fs::path kSample = fs::path(GRASPECMF_DATA_DIR) / "acronym-sample";
 
-void BM_InCollisionSampleGrasps(benchmark::State& state) {
-  const auto record = graspecmf::data::read_acronym_file(
+struct SampleMug {
+  graspecmf::data::AcronymGraspFile record = graspecmf::data::read_acronym_file(
       kSample / "grasps" / "Mug_10f6e09036350e92b3f21f1137c3c347_0.0002682457830986903.h5");
-  const auto mug = graspecmf::geometry::scaled(
+  graspecmf::geometry::TriangleMesh mesh = graspecmf::geometry::scaled(
       graspecmf::geometry::read_mesh(kSample / record.object.file), record.object.scale);
+};
+
+void BM_InCollisionSampleGrasps(benchmark::State& state) {
+  const SampleMug mug;
   std::size_t i = 0;
   for (auto _ : state) {
-    const auto pose = graspecmf::lie::Pose::from_matrix(record.transforms[i++ % record.size()]);
-    benchmark::DoNotOptimize(graspecmf::gripper::in_collision(mug, pose));
+    const auto pose =
+        graspecmf::lie::Pose::from_matrix(mug.record.transforms[i++ % mug.record.size()]);
+    benchmark::DoNotOptimize(graspecmf::gripper::in_collision(mug.mesh, pose));
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));  // grasps
 }
 BENCHMARK(BM_InCollisionSampleGrasps)->Unit(benchmark::kMicrosecond);
+
+// The sample mug's grasps (almost all clear, so every point is visited) against its
+// kCollisionCloudPoints-point cloud.
+void BM_CloudCollisionSampleGrasps(benchmark::State& state) {
+  const SampleMug mug;
+  const graspecmf::gripper::CloudCollisionChecker checker(
+      graspecmf::gripper::collision_cloud(mug.mesh, 0));
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const auto pose =
+        graspecmf::lie::Pose::from_matrix(mug.record.transforms[i++ % mug.record.size()]);
+    benchmark::DoNotOptimize(checker.in_collision(pose));
+  }
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));  // grasps
+}
+BENCHMARK(BM_CloudCollisionSampleGrasps)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -28,9 +28,12 @@ class CloudCollisionChecker {
   bool in_collision(const lie::Pose& grasp) const;
 
  private:
+  struct Bound {
+    Vec3 lower, upper;  // an axis-aligned box in the gripper frame
+  };
   std::vector<Vec3> points_;
-  std::vector<geometry::OrientedBox> boxes_;  // gripper frame
-  Vec3 lower_, upper_;                        // the boxes' axis-aligned bound, gripper frame
+  std::vector<Bound> boxes_;  // collision_boxes
+  Vec3 lower_, upper_;        // their common bound
 };
 
 }  // namespace graspecmf::gripper
