@@ -3,6 +3,7 @@
 #include <torch/torch.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "graspecmf/core/error.hpp"
@@ -26,6 +27,17 @@ flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
   };
   return flow::integrate(flow::guided_field(field, settings.guidance), x0,
                          flow::parse_solver(settings.solver), settings.steps);
+}
+
+// Grasps to draw in a later sampling round: the missing count over the clear fraction so far
+// (1/64 if none was clear), with a quarter to spare; at least 64, at most 64 n.
+std::size_t next_round_size(std::size_t n, std::size_t missing, std::size_t kept,
+                            std::size_t drawn) {
+  const double clear_fraction =
+      kept == 0 ? 1.0 / 64 : static_cast<double>(kept) / static_cast<double>(drawn);
+  const auto wanted =
+      static_cast<std::size_t>(std::ceil(1.25 * static_cast<double>(missing) / clear_fraction));
+  return std::clamp<std::size_t>(wanted, 64, std::max<std::size_t>(64, 64 * n));
 }
 
 // The seed of sampling round r ≥ 1 (round 0 uses the caller's seed).
@@ -67,7 +79,8 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   std::vector<lie::Pose> grasps;
   std::size_t drawn = 0;
   for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {
-    const std::size_t count = round == 0 ? n : std::max<std::size_t>(2 * (n - grasps.size()), 64);
+    const std::size_t count =
+        round == 0 ? n : next_round_size(n, n - grasps.size(), grasps.size(), drawn);
     at::Generator generator = flow::make_generator(round == 0 ? seed : round_seed(seed, round));
     const flow::PoseBatch x1 = integrate_condition(
         model, condition,
@@ -87,8 +100,7 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   if (grasps.size() < n) {
     throw Error("only " + std::to_string(grasps.size()) + " of " + std::to_string(drawn) +
                 " sampled grasps are clear of the object's points (" + std::to_string(n) +
-                " needed) after " + std::to_string(kMaxSamplingRounds) +
-                " rounds; the cloud may not match the object the model sees");
+                " needed) after " + std::to_string(kMaxSamplingRounds) + " rounds");
   }
   return grasps;
 }

@@ -21,8 +21,9 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
 // n grasps for a cloud in metres (any frame, ≥ k points): centred on its centroid and scaled by
 // position_scale for the network, the prior drawn from seed; returned as T_object_gripper in the
 // cloud's frame, metres. With `clear_of`, only grasps whose open hand is clear of its points are
-// kept: the first round draws n (the grasps of the unfiltered call), later ones twice the missing
-// count (at least 64), and Error is thrown if fewer than n are clear after kMaxSamplingRounds.
+// kept: the first round draws n (the grasps of the unfiltered call), later ones the missing count
+// over the clear fraction so far, with a quarter to spare (64 to 64 n grasps), and Error is thrown
+// if fewer than n are clear after kMaxSamplingRounds.
 // Throws Error for an empty or non-finite cloud or n = 0.
 inline constexpr int kMaxSamplingRounds = 8;
 std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
