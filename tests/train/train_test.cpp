@@ -122,13 +122,22 @@ TEST(Sampling, EndToEndSamplingIsEquivariant) {
   }
 }
 
+// 40 seeded normal points with standard deviation `spread`.
+std::vector<Eigen::Vector3d> normal_cloud(double spread) {
+  std::vector<Eigen::Vector3d> cloud;
+  Rng rng(4);
+  for (int i = 0; i < 40; ++i) {
+    const double x = rng.normal(), y = rng.normal(), z = rng.normal();
+    cloud.push_back(spread * Eigen::Vector3d(x, y, z));
+  }
+  return cloud;
+}
+
 TEST(Sampling, GraspsFollowTheCloudsPosition) {
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();
   const nn::GraspFlowModel model(config.model);
-  std::vector<Eigen::Vector3d> cloud;
-  Rng rng(4);
-  for (int i = 0; i < 40; ++i) cloud.emplace_back(rng.normal(), rng.normal(), rng.normal());
+  std::vector<Eigen::Vector3d> cloud = normal_cloud(1.0);
   std::vector<Eigen::Vector3d> shifted = cloud;
   for (Eigen::Vector3d& q : shifted) q += Eigen::Vector3d(0.3, -0.2, 1.0);
   const auto a = sample_grasps(model, cloud, config, 5, config.sampling, 9);
@@ -147,10 +156,7 @@ TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();
   const nn::GraspFlowModel model(config.model);
-  std::vector<Eigen::Vector3d> cloud;
-  Rng rng(4);
-  for (int i = 0; i < 40; ++i)
-    cloud.push_back(0.05 * Eigen::Vector3d(rng.normal(), rng.normal(), rng.normal()));
+  const std::vector<Eigen::Vector3d> cloud = normal_cloud(0.05);
   const gripper::CloudCollisionChecker checker(cloud);
   const auto all = sample_grasps(model, cloud, config, 40, config.sampling, 9);
   const auto clear = sample_grasps(model, cloud, config, 40, config.sampling, 9, &checker);
