@@ -8,7 +8,7 @@
 
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
-#include "graspecmf/gripper/cloud_collision.hpp"
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/gripper/panda.hpp"
 
 namespace {
@@ -35,20 +35,21 @@ void BM_InCollisionSampleGrasps(benchmark::State& state) {
 }
 BENCHMARK(BM_InCollisionSampleGrasps)->Unit(benchmark::kMicrosecond);
 
-// The sample mug's grasps (almost all clear, so every point is visited) against its
-// kCollisionCloudPoints-point cloud.
-void BM_CloudCollisionSampleGrasps(benchmark::State& state) {
+// The sample mug's grasps (almost all clear and deep, so every point is visited) through
+// CloudGraspFilter::keeps on its kFilterCloudPoints-point cloud: the collision check alone
+// (argument 0), then with the depth check too (argument 1).
+void BM_CloudGraspFilterSampleGrasps(benchmark::State& state) {
   const SampleMug mug;
-  const graspecmf::gripper::CloudCollisionChecker checker(
-      graspecmf::gripper::collision_cloud(mug.mesh, 0));
+  const graspecmf::gripper::CloudGraspFilter filter(graspecmf::gripper::filter_cloud(mug.mesh, 0),
+                                                    {true, state.range(0) == 1});
   std::size_t i = 0;
   for (auto _ : state) {
     const auto pose =
         graspecmf::lie::Pose::from_matrix(mug.record.transforms[i++ % mug.record.size()]);
-    benchmark::DoNotOptimize(checker.in_collision(pose));
+    benchmark::DoNotOptimize(filter.keeps(pose));
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));  // grasps
 }
-BENCHMARK(BM_CloudCollisionSampleGrasps)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CloudGraspFilterSampleGrasps)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

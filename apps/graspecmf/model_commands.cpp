@@ -23,7 +23,7 @@
 #include "graspecmf/geometry/point_cloud_io.hpp"
 #include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
-#include "graspecmf/gripper/cloud_collision.hpp"
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/metrics/paired_comparison.hpp"
 #include "graspecmf/sim/batch.hpp"
@@ -93,22 +93,44 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
                   "Classifier-free guidance weight (0 = unconditional; default: the run's)");
 }
 
+// --reject-collisions and --reject-shallow, checking `whose` grasps against `points`.
+void add_filter_flags(CLI::App* cmd, gripper::GraspChecks& checks, const std::string& whose,
+                      const std::string& points) {
+  cmd->add_flag(
+      "--reject-collisions", checks.collisions,
+      "Keep only " + whose + " whose open hand holds none of " + points + "; not in the paper");
+  cmd->add_flag("--reject-shallow", checks.shallow,
+                fmt::format("Keep only {} with some of {} between the open fingers at least "
+                            "{:g} cm below the fingertips; not in the paper",
+                            whose, points, 100 * gripper::kMinGraspDepth));
+}
+
+// The filter in a one-line summary: "", or e.g. ", colliding and shallow grasps rejected".
+std::string filter_note(const gripper::GraspChecks& checks) {
+  if (!checks.any()) return "";
+  return fmt::format(", {} grasps rejected", checks.collisions && checks.shallow
+                                                 ? "colliding and shallow"
+                                             : checks.collisions ? "colliding"
+                                                                 : "shallow");
+}
+
 // ---- sample ----
 
 struct SampleArgs {
   std::string model, mesh, points, acronym, mesh_root, out;
   double scale = 1.0;
   SamplingOverrides sampling;
-  bool reject_collisions = false;
+  gripper::GraspChecks checks;
   std::size_t num = 100;
   int threads = kDefaultThreads;
   std::uint64_t seed = 0;
 };
 
 // The object as sample sees it: the model's input cloud in metres, the points that
-// --reject-collisions checks the hand against, and the record to write beside the grasps.
+// --reject-collisions and --reject-shallow check grasps against, and the record to write beside
+// the grasps.
 struct SampleInput {
-  std::vector<Eigen::Vector3d> cloud, collision_points;
+  std::vector<Eigen::Vector3d> cloud, filter_points;
   data::AcronymObjectInfo info;
 };
 
@@ -119,7 +141,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
   data::AcronymObjectInfo& info = input.info;
   if (!a.points.empty()) {
     std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
-    if (a.reject_collisions) input.collision_points = cloud;  // every point of the file
+    if (a.checks.any()) input.filter_points = cloud;  // every point of the file
     // A seeded subset when the file has more points than the model was trained with.
     Rng rng(a.seed);
     for (std::size_t i = 0; cloud.size() > points && i < points; ++i) {
@@ -142,9 +164,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
         geometry::read_mesh(data::find_object_mesh(a.acronym, info.file, a.mesh_root)), info.scale);
   }
   input.cloud = geometry::sample_surface(mesh, points, a.seed).points;
-  if (a.reject_collisions) {
-    input.collision_points = gripper::collision_cloud(mesh, a.seed);
-  }
+  if (a.checks.any()) input.filter_points = gripper::filter_cloud(mesh, a.seed);
   return input;
 }
 
@@ -158,12 +178,12 @@ void run_sample(const SampleArgs& a) {
     throw Error(fmt::format("sample: the cloud has {} points; the model needs at least {}",
                             input.cloud.size(), trained.config.model.encoder.k));
   }
-  std::optional<gripper::CloudCollisionChecker> checker;
-  if (a.reject_collisions) checker.emplace(input.collision_points);
+  std::optional<gripper::CloudGraspFilter> filter;
+  if (a.checks.any()) filter.emplace(input.filter_points, a.checks);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<lie::Pose> grasps =
       train::sample_grasps(trained.model, input.cloud, trained.config, a.num, settings, a.seed,
-                           checker ? &*checker : nullptr);
+                           filter ? &*filter : nullptr);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   data::AcronymGraspFile record;
@@ -173,7 +193,7 @@ void run_sample(const SampleArgs& a) {
   data::write_acronym_file(record, a.out);
   std::cout << fmt::format("{} grasps ({} {} steps, guidance {}{}) in {:.2f} s → {}\n", a.num,
                            settings.solver, settings.steps, settings.guidance,
-                           a.reject_collisions ? ", colliding ones rejected" : "", seconds, a.out);
+                           filter_note(a.checks), seconds, a.out);
 }
 
 // ---- evaluate ----
@@ -181,7 +201,8 @@ void run_sample(const SampleArgs& a) {
 struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
   std::string sim_config, cache;  // for --success
-  bool baselines = false, reject_collisions = false;
+  bool baselines = false;
+  gripper::GraspChecks checks;
   SamplingOverrides sampling;
   std::size_t num = 0;
   std::size_t success = 0;  // grasps simulated per object and rotation; 0: no simulation
@@ -305,14 +326,14 @@ void run_evaluate(const EvaluateArgs& a) {
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
     const train::ObjectEvaluation e =
         train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
-                               settings, a.seed, a.reject_collisions);
+                               settings, a.seed, a.checks);
     json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
     table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
     std::optional<train::BaselineEvaluation> baseline;
     if (a.baselines) {
-      const train::BaselineEvaluation& b = baseline.emplace(
-          train::evaluate_baselines(object, *shapes, n, a.seed, a.reject_collisions));
+      const train::BaselineEvaluation& b =
+          baseline.emplace(train::evaluate_baselines(object, *shapes, n, a.seed, a.checks));
       entry["random_emd"] = b.random_emd;
       entry["nearest_training_object"] = b.nearest;
       entry["nearest_emd"] = b.nearest_emd;
@@ -362,7 +383,8 @@ void run_evaluate(const EvaluateArgs& a) {
                   {{"solver", settings.solver},
                    {"steps", settings.steps},
                    {"guidance", settings.guidance},
-                   {"reject_collisions", a.reject_collisions}}},
+                   {"reject_collisions", a.checks.collisions},
+                   {"reject_shallow", a.checks.shallow}}},
                  {"seed", a.seed},
                  {"objects", per_object},
                  {"mean_emd", total / count}};
@@ -411,10 +433,9 @@ void run_evaluate(const EvaluateArgs& a) {
   if (!a.out.empty()) write_text_atomically(a.out, report.dump(1) + "\n");
   if (!a.markdown.empty()) {
     write_text_atomically(
-        a.markdown,
-        fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", a.model,
-                    trained.step, settings.solver, settings.steps, settings.guidance,
-                    a.reject_collisions ? ", colliding grasps rejected" : "", table, summary));
+        a.markdown, fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", a.model,
+                                trained.step, settings.solver, settings.steps, settings.guidance,
+                                filter_note(a.checks), table, summary));
   }
 }
 
@@ -442,10 +463,9 @@ void add_model_commands(CLI::App& app) {
   sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
   sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
   add_sampling_options(sample_cmd, s->sampling);
-  sample_cmd->add_flag("--reject-collisions", s->reject_collisions,
-                       "Keep only grasps whose open hand holds none of the object's points (every "
-                       "point of --points, or a dense surface sample of the mesh); not in the "
-                       "paper");
+  add_filter_flags(sample_cmd, s->checks, "grasps",
+                   "the object's points (every point of --points, or a dense surface sample of "
+                   "the mesh)");
   sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
   sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
@@ -460,9 +480,9 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--mesh-root", e->mesh_root, "Folder the ACRONYM file's mesh is in");
   eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
   add_sampling_options(eval_cmd, e->sampling);
-  eval_cmd->add_flag("--reject-collisions", e->reject_collisions,
-                     "Keep only generated grasps (and, with --baselines, nearest-object grasps) "
-                     "whose open hand holds none of a dense surface sample of the object");
+  add_filter_flags(eval_cmd, e->checks,
+                   "generated grasps (and, with --baselines, nearest-object grasps)",
+                   "a dense surface sample of the object");
   eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
   eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   eval_cmd->add_flag("--baselines", e->baselines,

@@ -8,7 +8,7 @@
 #include "cli_support.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
-#include "graspecmf/gripper/cloud_collision.hpp"
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
 
 namespace {
 namespace fs = std::filesystem;
@@ -54,13 +54,47 @@ TEST(CliModel, TrainSampleEvaluate) {
               " --num 7 --seed 3 --reject-collisions --out " + out,
           dir);
   ASSERT_EQ(clear_run.exit_code, 0) << clear_run.err;
-  EXPECT_NE(clear_run.out.find("colliding ones rejected"), std::string::npos) << clear_run.out;
-  const graspecmf::gripper::CloudCollisionChecker checker(graspecmf::gripper::collision_cloud(
-      graspecmf::geometry::read_mesh((data / "meshes/Box/b0.obj").string()), 3));
+  EXPECT_NE(clear_run.out.find("colliding grasps rejected"), std::string::npos) << clear_run.out;
+  const std::vector<Eigen::Vector3d> filter_points = graspecmf::gripper::filter_cloud(
+      graspecmf::geometry::read_mesh((data / "meshes/Box/b0.obj").string()), 3);
+  const graspecmf::gripper::CloudGraspFilter checker(filter_points, {true, false});
   const graspecmf::data::AcronymGraspFile clear_record = graspecmf::data::read_acronym_file(out);
   ASSERT_EQ(clear_record.size(), 7u);
   for (const auto& T : clear_record.transforms) {
     EXPECT_FALSE(checker.in_collision(graspecmf::lie::Pose::from_matrix(T)));
+  }
+  // The untrained model's grasps rarely hold the box deep between the fingers: --reject-shallow
+  // ends in one clear error rather than fewer grasps than asked for.
+  expect_one_error_line(
+      run("sample --model " + run_dir + " --mesh " + (data / "meshes/Box/b0.obj").string() +
+              " --num 7 --seed 3 --reject-collisions --reject-shallow --out " + out,
+          dir),
+      "pass the grasp filter");
+  // Points filling a 40 cm cube reach deep into nearly any hand: every grasp kept holds some of
+  // them (of the whole file, not only the model's subset) at least kMinGraspDepth in.
+  std::ofstream filled(dir / "filled.xyz");
+  std::vector<Eigen::Vector3d> cube;
+  for (int i = 0; i <= 40; ++i) {
+    for (int j = 0; j <= 40; ++j) {
+      for (int k = 0; k <= 40; ++k) {
+        cube.push_back(0.01 * Eigen::Vector3d(i - 20, j - 20, k - 20));
+        filled << cube.back().transpose() << "\n";
+      }
+    }
+  }
+  filled.close();
+  const auto deep_run =
+      run("sample --model " + run_dir + " --points " + (dir / "filled.xyz").string() +
+              " --num 7 --seed 3 --reject-shallow --out " + out,
+          dir);
+  ASSERT_EQ(deep_run.exit_code, 0) << deep_run.err;
+  EXPECT_NE(deep_run.out.find("shallow grasps rejected"), std::string::npos) << deep_run.out;
+  const graspecmf::gripper::CloudGraspFilter depth(cube, {false, true});
+  const graspecmf::data::AcronymGraspFile deep_record = graspecmf::data::read_acronym_file(out);
+  ASSERT_EQ(deep_record.size(), 7u);
+  for (const auto& T : deep_record.transforms) {
+    EXPECT_GE(depth.depth(graspecmf::lie::Pose::from_matrix(T)),
+              graspecmf::gripper::kMinGraspDepth);
   }
 
   const auto evaluated =
@@ -110,17 +144,20 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_NE(evaluated.out.find("simulated success"), std::string::npos) << evaluated.out;
   EXPECT_NE(evaluated.out.find("start in collision"), std::string::npos) << evaluated.out;
 
-  // --reject-collisions is recorded with the sampling settings. Every grasp of the nearest box
-  // collides with the val box here, so the baseline fails with one clear error.
+  // The filter is recorded with the sampling settings. Every grasp of the nearest box collides
+  // with the val box here, so the baseline fails with one clear error.
   const std::string reject = "evaluate --model " + run_dir + " --data " + data.string() +
                              " --split val --num 4 --reject-collisions --out " +
                              (dir / "rejected.json").string();
   const auto rejected = run(reject, dir);
   ASSERT_EQ(rejected.exit_code, 0) << rejected.err;
-  expect_one_error_line(run(reject + " --baselines", dir), "is clear of it");
+  expect_one_error_line(run(reject + " --baselines", dir), "passes the grasp filter on it");
   const nlohmann::json rejected_report = nlohmann::json::parse(read_file(dir / "rejected.json"));
   EXPECT_TRUE(rejected_report["sampling"]["reject_collisions"].get<bool>());
+  EXPECT_FALSE(rejected_report["sampling"]["reject_shallow"].get<bool>());
   EXPECT_FALSE(report["sampling"]["reject_collisions"].get<bool>());
+  // As with sample, the untrained model's grasps are too rarely deep for --reject-shallow.
+  expect_one_error_line(run(reject + " --reject-shallow", dir), "pass the grasp filter");
 }
 
 TEST(CliModel, BadInput) {

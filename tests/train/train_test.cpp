@@ -157,7 +157,7 @@ TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
   const TrainConfig config = tiny_config();
   const nn::GraspFlowModel model(config.model);
   const std::vector<Eigen::Vector3d> cloud = normal_cloud(0.05);
-  const gripper::CloudCollisionChecker checker(cloud);
+  const gripper::CloudGraspFilter checker(cloud, gripper::GraspChecks{true, false});
   const auto all = sample_grasps(model, cloud, config, 40, config.sampling, 9);
   const auto clear = sample_grasps(model, cloud, config, 40, config.sampling, 9, &checker);
   ASSERT_EQ(clear.size(), 40U);
@@ -178,7 +178,7 @@ TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
       for (int z = -30; z <= 30; ++z) filled.push_back(0.02 * Eigen::Vector3d(x, y, z));
     }
   }
-  const gripper::CloudCollisionChecker everywhere(filled);
+  const gripper::CloudGraspFilter everywhere(filled, gripper::GraspChecks{true, false});
   EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9, &everywhere), Error);
 }
 

@@ -8,7 +8,6 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
-#include "graspecmf/gripper/cloud_collision.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 #include "graspecmf/metrics/baselines.hpp"
@@ -51,26 +50,25 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
                                  const SamplingSettings& settings, std::uint64_t seed,
-                                 bool reject_collisions) {
+                                 const gripper::GraspChecks& checks) {
   ObjectEvaluation result;
   result.name = object.name;
   const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
   result.n = reference.size();
   const geometry::SurfacePoints cloud = geometry::sample_surface(
       object.mesh, static_cast<std::size_t>(config.model.encoder.points), seed + 1);
-  const std::vector<Eigen::Vector3d> obstacles = reject_collisions
-                                                     ? gripper::collision_cloud(object.mesh, seed)
-                                                     : std::vector<Eigen::Vector3d>{};
+  const std::vector<Eigen::Vector3d> filter_points =
+      checks.any() ? gripper::filter_cloud(object.mesh, seed) : std::vector<Eigen::Vector3d>{};
   for (std::size_t r = 0; r < rotations.size(); ++r) {
     const Eigen::Matrix3d& g = rotations[r];
     const std::vector<Eigen::Vector3d> rotated_cloud = rotated(cloud.points, g);
     std::vector<lie::Pose> rotated_reference;
     for (const lie::Pose& x : reference) rotated_reference.push_back({g * x.R, g * x.p});
-    std::optional<gripper::CloudCollisionChecker> checker;
-    if (reject_collisions) checker.emplace(rotated(obstacles, g));
+    std::optional<gripper::CloudGraspFilter> filter;
+    if (checks.any()) filter.emplace(rotated(filter_points, g), checks);
     const std::vector<lie::Pose> generated =
         sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
-                      checker ? &*checker : nullptr);
+                      filter ? &*filter : nullptr);
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
     std::vector<lie::Pose>& kept = result.generated.emplace_back();
     for (const lie::Pose& x : generated) kept.push_back({g.transpose() * x.R, g.transpose() * x.p});
@@ -126,7 +124,7 @@ const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object
 
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed, bool reject_collisions) {
+                                      std::uint64_t seed, const gripper::GraspChecks& checks) {
   BaselineEvaluation result;
   const std::vector<lie::Pose> shuffled = shuffled_grasps(object, seed);
   const auto slice = [&](std::size_t offset, std::size_t count) {
@@ -146,16 +144,17 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   const data::GraspObject& nearest = training.nearest(object, centroid, neighbour_centroid);
   result.nearest = nearest.name;
   std::vector<lie::Pose> moved;
-  std::optional<gripper::CloudCollisionChecker> checker;
-  if (reject_collisions) checker.emplace(gripper::collision_cloud(object.mesh, seed));
+  std::optional<gripper::CloudGraspFilter> filter;
+  if (checks.any()) filter.emplace(gripper::filter_cloud(object.mesh, seed), checks);
   for (lie::Pose g : shuffled_grasps(nearest, seed)) {
     if (moved.size() == result.n) break;
     g.p += centroid - neighbour_centroid;
-    if (!checker || !checker->in_collision(g)) moved.push_back(g);
+    if (!filter || filter->keeps(g)) moved.push_back(g);
   }
   if (moved.empty()) {
-    throw Error(object.name + ": none of the nearest training object " + nearest.name +
-                "'s grasps is clear of it, so the nearest-object baseline has no grasps");
+    throw Error(
+        object.name + ": none of the nearest training object " + nearest.name +
+        "'s grasps passes the grasp filter on it, so the nearest-object baseline has no grasps");
   }
   const std::size_t m = moved.size();  // n, or fewer if the nearest object has fewer
   result.nearest_n = m;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "graspecmf/data/dataset.hpp"
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/train/train_config.hpp"
 
 namespace graspecmf::train {
@@ -29,14 +30,14 @@ std::vector<lie::Pose> shuffled_grasps(const data::GraspObject& object, std::uin
 std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
                                         std::uint64_t seed);
 // For each rotation g: the object's seeded cloud and reference grasps rotated by g, n grasps
-// sampled from the model for the rotated cloud (with reject_collisions, only ones clear of the
-// rotated gripper::collision_cloud), and their EMD to the rotated reference; the generated grasps
-// are kept, in the object's frame.
+// sampled from the model for the rotated cloud (with checks, only ones that a filter on the rotated
+// gripper::filter_cloud keeps), and their EMD to the rotated reference; the generated grasps are
+// kept, in the object's frame.
 ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
                                  const SamplingSettings& settings, std::uint64_t seed,
-                                 bool reject_collisions = false);
+                                 const gripper::GraspChecks& checks = {});
 
 struct BaselineEvaluation {
   std::size_t n = 0;          // grasps compared
@@ -73,10 +74,10 @@ class TrainingShapes {
 // EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
 // and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
 // frames sit that far from the surface); and the successful grasps of the other training object
-// with the smallest Chamfer distance between centred seeded clouds (with reject_collisions, only
-// those whose hand is clear of the object's gripper::collision_cloud). Also the sampling floor.
+// with the smallest Chamfer distance between centred seeded clouds (with checks, only those that a
+// filter on the object's gripper::filter_cloud keeps). Also the sampling floor.
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed, bool reject_collisions = false);
+                                      std::uint64_t seed, const gripper::GraspChecks& checks = {});
 
 }  // namespace graspecmf::train

@@ -29,14 +29,14 @@ flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
                          flow::parse_solver(settings.solver), settings.steps);
 }
 
-// Grasps to draw in a later sampling round: the missing count over the clear fraction so far
-// (1/64 if none was clear), with a quarter to spare; at least 64, at most 64 n.
+// Grasps to draw in a later sampling round: the missing count over the kept fraction so far
+// (1/64 if none was kept), with a quarter to spare; at least 64, at most 64 n.
 std::size_t next_round_size(std::size_t n, std::size_t missing, std::size_t kept,
                             std::size_t drawn) {
-  const double clear_fraction =
+  const double kept_fraction =
       kept == 0 ? 1.0 / 64 : static_cast<double>(kept) / static_cast<double>(drawn);
   const auto wanted =
-      static_cast<std::size_t>(std::ceil(1.25 * static_cast<double>(missing) / clear_fraction));
+      static_cast<std::size_t>(std::ceil(1.25 * static_cast<double>(missing) / kept_fraction));
   return std::clamp<std::size_t>(wanted, 64, std::max<std::size_t>(64, 64 * n));
 }
 
@@ -57,7 +57,7 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
                                      const SamplingSettings& settings, std::uint64_t seed,
-                                     const gripper::CloudCollisionChecker* clear_of) {
+                                     const gripper::CloudGraspFilter* filter) {
   if (cloud.empty()) throw Error("sampling needs a non-empty point cloud");
   if (n == 0) throw Error("sampling needs at least one grasp");
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
@@ -94,13 +94,13 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
       grasp.R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
           R.data_ptr<double>() + 9 * g);
       grasp.p = Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g) / scale + centroid;
-      if (clear_of == nullptr || !clear_of->in_collision(grasp)) grasps.push_back(grasp);
+      if (filter == nullptr || filter->keeps(grasp)) grasps.push_back(grasp);
     }
   }
   if (grasps.size() < n) {
     throw Error("only " + std::to_string(grasps.size()) + " of " + std::to_string(drawn) +
-                " sampled grasps are clear of the object's points (" + std::to_string(n) +
-                " needed) after " + std::to_string(kMaxSamplingRounds) + " rounds");
+                " sampled grasps pass the grasp filter (" + std::to_string(n) + " needed) after " +
+                std::to_string(kMaxSamplingRounds) + " rounds");
   }
   return grasps;
 }

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "graspecmf/flow/pose_batch.hpp"
-#include "graspecmf/gripper/cloud_collision.hpp"
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/lie/se3.hpp"
 #include "graspecmf/nn/grasp_flow_model.hpp"
 #include "graspecmf/train/train_config.hpp"
@@ -20,16 +20,16 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
 
 // n grasps for a cloud in metres (any frame, ≥ k points): centred on its centroid and scaled by
 // position_scale for the network, the prior drawn from seed; returned as T_object_gripper in the
-// cloud's frame, metres. With `clear_of`, only grasps whose open hand is clear of its points are
-// kept: the first round draws n (the grasps of the unfiltered call), later ones the missing count
-// over the clear fraction so far, with a quarter to spare (64 to 64 n grasps), and Error is thrown
-// if fewer than n are clear after kMaxSamplingRounds.
+// cloud's frame, metres. With a `filter`, only grasps it keeps are returned: the first round draws
+// n (the grasps of the unfiltered call), later ones the missing count over the kept fraction so
+// far, with a quarter to spare (64 to 64 n grasps), and Error is thrown if fewer than n are kept
+// after kMaxSamplingRounds.
 // Throws Error for an empty or non-finite cloud or n = 0.
 inline constexpr int kMaxSamplingRounds = 8;
 std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
                                      const SamplingSettings& settings, std::uint64_t seed,
-                                     const gripper::CloudCollisionChecker* clear_of = nullptr);
+                                     const gripper::CloudGraspFilter* filter = nullptr);
 
 }  // namespace graspecmf::train

@@ -1,0 +1,82 @@
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <utility>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/surface_sampling.hpp"
+
+namespace graspecmf::gripper {
+namespace {
+
+bool inside(const Vec3& x, const Vec3& lower, const Vec3& upper) {
+  return x.x() >= lower.x() && x.x() <= upper.x() && x.y() >= lower.y() && x.y() <= upper.y() &&
+         x.z() >= lower.z() && x.z() <= upper.z();
+}
+
+// Object coordinates to the frame of a grasp (T_object_gripper): q ↦ Rᵀ (q − p).
+class ToGripper {
+ public:
+  explicit ToGripper(const lie::Pose& grasp)
+      : rotation_(grasp.R.transpose()), offset_(-(rotation_ * grasp.p)) {}
+  Vec3 operator()(const Vec3& q) const { return rotation_ * q + offset_; }
+
+ private:
+  Eigen::Matrix3d rotation_;
+  Vec3 offset_;
+};
+
+}  // namespace
+
+std::vector<Vec3> filter_cloud(const geometry::TriangleMesh& mesh, std::uint64_t seed) {
+  constexpr std::uint64_t kSeedOffset = 5;  // away from the seeds sampling and evaluation use
+  return geometry::sample_surface(mesh, kFilterCloudPoints, seed + kSeedOffset).points;
+}
+
+CloudGraspFilter::CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks, double opening)
+    : points_(std::move(points)), checks_(checks) {
+  if (points_.empty()) throw Error("the grasp filter needs a non-empty point cloud");
+  if (!std::all_of(points_.begin(), points_.end(), [](const Vec3& q) { return q.allFinite(); })) {
+    throw Error("the grasp filter's point cloud has a non-finite coordinate");
+  }
+  if (!checks_.any()) throw Error("the grasp filter needs at least one check");
+  hand_.lower = Vec3::Constant(std::numeric_limits<double>::infinity());
+  hand_.upper = -hand_.lower;
+  for (const geometry::OrientedBox& box : collision_boxes(opening)) {
+    // collision_boxes are axis-aligned in the gripper frame; a box bound is the box then.
+    const Vec3 reach = box.pose.R.cwiseAbs() * box.half_extents;
+    boxes_.push_back({box.pose.p - reach, box.pose.p + reach});
+    hand_.lower = hand_.lower.cwiseMin(boxes_.back().lower);
+    hand_.upper = hand_.upper.cwiseMax(boxes_.back().upper);
+  }
+  gap_ = {Vec3(-0.5 * opening, -panda::kFingerHalfWidthY, panda::kFingerBaseZ),
+          Vec3(0.5 * opening, panda::kFingerHalfWidthY, panda::kFingertipZ)};
+}
+
+bool CloudGraspFilter::in_collision(const lie::Pose& grasp) const {
+  const ToGripper local(grasp);
+  return std::any_of(points_.begin(), points_.end(), [&](const Vec3& q) {
+    const Vec3 x = local(q);
+    return inside(x, hand_.lower, hand_.upper) &&
+           std::any_of(boxes_.begin(), boxes_.end(),
+                       [&](const Bound& box) { return inside(x, box.lower, box.upper); });
+  });
+}
+
+double CloudGraspFilter::depth(const lie::Pose& grasp) const {
+  const ToGripper local(grasp);
+  double lowest = panda::kFingertipZ;
+  for (const Vec3& q : points_) {
+    const Vec3 x = local(q);
+    if (inside(x, gap_.lower, gap_.upper)) lowest = std::min(lowest, x.z());
+  }
+  return panda::kFingertipZ - lowest;
+}
+
+bool CloudGraspFilter::keeps(const lie::Pose& grasp) const {
+  if (checks_.collisions && in_collision(grasp)) return false;
+  return !checks_.shallow || depth(grasp) >= kMinGraspDepth;
+}
+
+}  // namespace graspecmf::gripper
