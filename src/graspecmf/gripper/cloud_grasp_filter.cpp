@@ -54,14 +54,16 @@ CloudGraspFilter::CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks,
           Vec3(0.5 * opening, panda::kFingerHalfWidthY, panda::kFingertipZ)};
 }
 
+inline bool CloudGraspFilter::in_hand(const Vec3& x) const {
+  return inside(x, hand_.lower, hand_.upper) &&
+         std::any_of(boxes_.begin(), boxes_.end(),
+                     [&](const Bound& box) { return inside(x, box.lower, box.upper); });
+}
+
 bool CloudGraspFilter::in_collision(const lie::Pose& grasp) const {
   const ToGripper local(grasp);
-  return std::any_of(points_.begin(), points_.end(), [&](const Vec3& q) {
-    const Vec3 x = local(q);
-    return inside(x, hand_.lower, hand_.upper) &&
-           std::any_of(boxes_.begin(), boxes_.end(),
-                       [&](const Bound& box) { return inside(x, box.lower, box.upper); });
-  });
+  return std::any_of(points_.begin(), points_.end(),
+                     [&](const Vec3& q) { return in_hand(local(q)); });
 }
 
 double CloudGraspFilter::depth(const lie::Pose& grasp) const {
@@ -75,8 +77,15 @@ double CloudGraspFilter::depth(const lie::Pose& grasp) const {
 }
 
 bool CloudGraspFilter::keeps(const lie::Pose& grasp) const {
-  if (checks_.collisions && in_collision(grasp)) return false;
-  return !checks_.shallow || depth(grasp) >= kMinGraspDepth;
+  if (!checks_.shallow) return !in_collision(grasp);
+  const ToGripper local(grasp);
+  double lowest = panda::kFingertipZ;
+  for (const Vec3& q : points_) {
+    const Vec3 x = local(q);
+    if (checks_.collisions && in_hand(x)) return false;
+    if (inside(x, gap_.lower, gap_.upper)) lowest = std::min(lowest, x.z());
+  }
+  return panda::kFingertipZ - lowest >= kMinGraspDepth;
 }
 
 }  // namespace graspecmf::gripper

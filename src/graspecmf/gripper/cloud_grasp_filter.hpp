@@ -45,10 +45,13 @@ class CloudGraspFilter {
   // approach-axis coordinate of a point between the open fingers (within the fingers' width, from
   // the finger bases to the tips); 0 when no point is there.
   double depth(const lie::Pose& grasp) const;
-  // True if the grasp passes every check asked for.
+  // True if the grasp passes every check asked for (one pass over the cloud).
   bool keeps(const lie::Pose& grasp) const;
 
  private:
+  // True if x (gripper frame) lies in a collision box.
+  bool in_hand(const Vec3& x) const;
+
   struct Bound {
     Vec3 lower, upper;  // an axis-aligned box in the gripper frame
   };
