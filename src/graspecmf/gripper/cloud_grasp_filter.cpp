@@ -66,26 +66,26 @@ bool CloudGraspFilter::in_collision(const lie::Pose& grasp) const {
                      [&](const Vec3& q) { return in_hand(local(q)); });
 }
 
-double CloudGraspFilter::depth(const lie::Pose& grasp) const {
+std::optional<double> CloudGraspFilter::scan_depth(const lie::Pose& grasp,
+                                                   bool stop_at_collision) const {
   const ToGripper local(grasp);
   double lowest = panda::kFingertipZ;
   for (const Vec3& q : points_) {
     const Vec3 x = local(q);
+    if (stop_at_collision && in_hand(x)) return std::nullopt;
     if (inside(x, gap_.lower, gap_.upper)) lowest = std::min(lowest, x.z());
   }
   return panda::kFingertipZ - lowest;
 }
 
+double CloudGraspFilter::depth(const lie::Pose& grasp) const {
+  return *scan_depth(grasp, false);
+}
+
 bool CloudGraspFilter::keeps(const lie::Pose& grasp) const {
   if (!checks_.shallow) return !in_collision(grasp);
-  const ToGripper local(grasp);
-  double lowest = panda::kFingertipZ;
-  for (const Vec3& q : points_) {
-    const Vec3 x = local(q);
-    if (checks_.collisions && in_hand(x)) return false;
-    if (inside(x, gap_.lower, gap_.upper)) lowest = std::min(lowest, x.z());
-  }
-  return panda::kFingertipZ - lowest >= kMinGraspDepth;
+  const std::optional<double> reach = scan_depth(grasp, checks_.collisions);
+  return reach && *reach >= kMinGraspDepth;
 }
 
 }  // namespace graspecmf::gripper

@@ -6,6 +6,7 @@
 // dense: a box that cuts the surface between samples is missed.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "graspecmf/gripper/panda.hpp"
@@ -51,6 +52,9 @@ class CloudGraspFilter {
  private:
   // True if x (gripper frame) lies in a collision box.
   bool in_hand(const Vec3& x) const;
+  // One pass over the cloud at `grasp`: the depth, or nothing as soon as a point lies in a
+  // collision box when stop_at_collision.
+  std::optional<double> scan_depth(const lie::Pose& grasp, bool stop_at_collision) const;
 
   struct Bound {
     Vec3 lower, upper;  // an axis-aligned box in the gripper frame
