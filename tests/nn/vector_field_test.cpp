@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 #include <torch/serialize.h>
 
-#include <cmath>
 #include <sstream>
 #include <vector>
 
@@ -67,25 +66,8 @@ VectorFieldOptions small_field_z_every_layer() {
   return options;
 }
 
-VectorFieldOptions small_field_attention(bool z_every_layer) {
-  VectorFieldOptions options = small_field();
-  options.z_every_layer = z_every_layer;
-  options.z_attention_heads = 4;
-  return options;
-}
-
-// Attention written out: each grasp's H queries (channels first, [G, H, 3]) against its object's
-// keys W_k z, softmax over z, the weighted sums of z; zero without the condition.
-torch::Tensor naive_attention(const VectorField& field, const torch::Tensor& z_per_grasp,
-                              const torch::Tensor& h) {
-  const auto queries = field->query->forward(h);       // [G, H, 3]
-  const auto keys = field->key->forward(z_per_grasp);  // [G, Z, 3]
-  const auto scores = torch::einsum("ghc,gjc->ghj", {queries, keys}) / std::sqrt(3.0);
-  return torch::einsum("ghj,gjc->ghc", {torch::softmax(scores, -1), z_per_grasp});
-}
-
 // The field with its input lists written out: [z, r1, r2, r3, p, t·f_equi] per grasp, and with
-// z_every_layer [h, z] for each later hidden layer, then the attended vectors in the second.
+// z_every_layer [h, z] for each later hidden layer.
 Velocity naive_field(const VectorField& field, const torch::Tensor& z, const Grasps& x) {
   const int64_t g = x.rotation.size(0);
   const auto z_per_grasp = z.index_select(0, x.object_index) * x.keep.view({g, 1, 1});
@@ -94,12 +76,7 @@ Velocity naive_field(const VectorField& field, const torch::Tensor& z, const Gra
   const auto lifted = x.time.view({g, 1, 1}) * field->lift->forward(inputs);
   auto h = field->layers.front()->forward(torch::cat({inputs, lifted}, 1));
   for (std::size_t l = 1; l < field->layers.size(); ++l) {
-    // Zeroing z per grasp for the null condition zeroes its values, so its attended vectors.
-    const auto attended = l == 1 && field->options().z_attention_heads > 0
-                              ? naive_attention(field, z_per_grasp, h)
-                              : torch::Tensor();
     if (field->options().z_every_layer) h = torch::cat({h, z_per_grasp}, 1);
-    if (attended.defined()) h = torch::cat({h, attended}, 1);
     h = field->layers[l]->forward(h);
   }
   const auto out = field->out->forward(h);
@@ -129,19 +106,6 @@ TEST_F(VectorFieldTest, ZEveryLayerMatchesTheFullInputLists) {
   EXPECT_LT(relative_error(fast.v, naive.v), 1e-5);
 }
 
-TEST_F(VectorFieldTest, ZAttentionMatchesTheFullInputLists) {
-  for (const bool every : {false, true}) {
-    VectorField field(small_field_attention(every));
-    EXPECT_EQ(field->layers[1]->feature->weight.size(1), 32 + (every ? 16 : 0) + 4);
-    const auto z = torch::randn({3, 16, 3});
-    const auto x = random_grasps(40, 3);
-    const auto fast = run(field, z, x);
-    const auto naive = naive_field(field, z, x);
-    EXPECT_LT(relative_error(fast.omega, naive.omega), 1e-5) << every;
-    EXPECT_LT(relative_error(fast.v, naive.v), 1e-5) << every;
-  }
-}
-
 // Rotating z and the poses by 3 random rotations rotates the field's output.
 void expect_equivariant(const VectorField& field, int64_t z_channels) {
   const auto z = torch::randn({2, z_channels, 3});
@@ -161,8 +125,6 @@ void expect_equivariant(const VectorField& field, int64_t z_channels) {
 TEST_F(VectorFieldTest, IsEquivariant) {
   expect_equivariant(VectorField(), 341);
   expect_equivariant(VectorField(small_field_z_every_layer()), 16);
-  expect_equivariant(VectorField(small_field_attention(false)), 16);
-  expect_equivariant(VectorField(small_field_attention(true)), 16);
 }
 
 // With keep = 0 the field does not depend on z; with keep = 1 (bool) it does.
@@ -180,8 +142,7 @@ void expect_null_condition_ignores_z(const VectorField& field) {
 }
 
 TEST_F(VectorFieldTest, NullConditionIgnoresZ) {
-  for (const auto& options :
-       {small_field(), small_field_z_every_layer(), small_field_attention(false)}) {
+  for (const auto& options : {small_field(), small_field_z_every_layer()}) {
     expect_null_condition_ignores_z(VectorField(options));
   }
 }
@@ -220,30 +181,10 @@ TEST_F(VectorFieldTest, RejectsBadInput) {
   EXPECT_THROW(field->forward(every->condition(torch::randn({2, 16, 3})), x.object_index,
                               x.rotation, x.position, x.time, x.keep),
                Error);
-  // A condition without keys, and one whose keys cover fewer objects than its z terms.
-  VectorField attention(small_field_attention(false));
-  EXPECT_THROW(
-      attention->forward(condition, x.object_index, x.rotation, x.position, x.time, x.keep), Error);
-  auto short_keys = attention->condition(torch::randn({2, 16, 3}));
-  short_keys.keys = short_keys.keys.narrow(0, 0, 1);
-  EXPECT_THROW(
-      attention->forward(short_keys, x.object_index, x.rotation, x.position, x.time, x.keep),
-      Error);
-}
-
-TEST_F(VectorFieldTest, RejectsBadAttentionOptions) {
-  auto options = small_field();
-  options.z_attention_heads = -1;
-  EXPECT_THROW(VectorField{options}, Error);
-  options.z_attention_heads = 2;
-  options.hidden_widths = {32};
-  EXPECT_THROW(VectorField{options}, Error);
 }
 
 TEST_F(VectorFieldTest, ModelGradientsReachEveryParameter) {
-  auto options = small_model();
-  options.field = small_field_attention(true);
-  GraspFlowModel model(options);
+  GraspFlowModel model(small_model());
   const auto condition = model->condition(torch::randn({2, 64, 3}));
   const auto x = random_grasps(64, 2);
   const auto velocity = model(condition, x.object_index, x.rotation, x.position, x.time, x.keep);

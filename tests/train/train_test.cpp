@@ -55,8 +55,7 @@ TrainConfig tiny_config() {
 }
 
 TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
-  for (const char* name : {"paper.json", "cpu.json", "cpu-wide.json", "cpu-z-every-layer.json",
-                           "cpu-attention.json"}) {
+  for (const char* name : {"paper.json", "cpu.json", "cpu-wide.json", "cpu-z-every-layer.json"}) {
     const fs::path file = fs::path(GRASPECMF_DATA_DIR) / ".." / "configs" / name;
     const TrainConfig c = read_train_config(file);
     EXPECT_EQ(to_json(train_config_from_json(to_json(c))), to_json(c)) << name;
@@ -96,23 +95,11 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_DOUBLE_EQ(train_config_from_json({{"data", {{"stretch", 0.1}}}}).data.stretch, 0.1);
   EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"points", 8}, {"k", 16}}}}}}),
                Error);
-  EXPECT_THROW(train_config_from_json({{"model", {{"field", {{"z_attention_heads", -1}}}}}}),
-               Error);
-  EXPECT_THROW(train_config_from_json(
-                   {{"model", {{"field", {{"hidden_widths", {8}}, {"z_attention_heads", 2}}}}}}),
-               Error);
-  EXPECT_EQ(train_config_from_json({{"model", {{"field", {{"z_attention_heads", 2}}}}}})
-                .model.field.z_attention_heads,
-            2);
 }
 
-// Rotating the cloud and the prior noise rotates the sampled grasps, with and without attention.
-class EndToEnd : public ::testing::TestWithParam<int64_t> {};
-
-TEST_P(EndToEnd, SamplingIsEquivariant) {
+TEST(Sampling, EndToEndSamplingIsEquivariant) {
   torch::manual_seed(1);
-  TrainConfig config = tiny_config();
-  config.model.field.z_attention_heads = GetParam();
+  const TrainConfig config = tiny_config();
   const nn::GraspFlowModel model(config.model);
   const at::Tensor points = torch::randn({32, 3});
   at::Generator generator = flow::make_generator(2);
@@ -134,8 +121,6 @@ TEST_P(EndToEnd, SamplingIsEquivariant) {
     EXPECT_LT(error / scale, 1e-4) << solver;
   }
 }
-
-INSTANTIATE_TEST_SUITE_P(Sampling, EndToEnd, ::testing::Values(0, 2));
 
 // 40 seeded normal points with standard deviation `spread`.
 std::vector<Eigen::Vector3d> normal_cloud(double spread) {

@@ -1,6 +1,5 @@
 #include "graspecmf/nn/vector_field.hpp"
 
-#include <cmath>
 #include <string>
 #include <utility>
 
@@ -17,10 +16,6 @@ constexpr int64_t kPoseVectors = 4;  // r1, r2, r3, p
 VectorFieldImpl::VectorFieldImpl(VectorFieldOptions options) : options_(std::move(options)) {
   detail::require(options_.z_channels >= 1, "VectorField: z_channels must be positive");
   detail::require(!options_.hidden_widths.empty(), "VectorField: hidden_widths must not be empty");
-  const int64_t heads = options_.z_attention_heads;
-  detail::require(heads >= 0, "VectorField: z_attention_heads must not be negative");
-  detail::require(heads == 0 || options_.hidden_widths.size() >= 2,
-                  "VectorField: z_attention_heads needs at least two hidden layers");
   const int64_t z = options_.z_channels;
   lift = register_module("lift", VNLinear(z + kPoseVectors, 1));
   int64_t in = z + kPoseVectors + 1;
@@ -28,17 +23,12 @@ VectorFieldImpl::VectorFieldImpl(VectorFieldOptions options) : options_(std::mov
     const int64_t width = options_.hidden_widths[l];
     detail::require(width >= 1, "VectorField: hidden widths must be positive");
     const int64_t z_inputs = l > 0 && options_.z_every_layer ? z : 0;
-    const int64_t attended = l == 1 ? heads : 0;
     layers.push_back(
         register_module("layer" + std::to_string(l),
-                        VNLinearLeakyReLU(in + z_inputs + attended, width, false, options_.slope)));
+                        VNLinearLeakyReLU(in + z_inputs, width, false, options_.slope)));
     in = width;
   }
   out = register_module("out", VNLinear(in, 2));
-  if (heads > 0) {
-    query = register_module("query", VNLinear(options_.hidden_widths.front(), heads));
-    key = register_module("key", VNLinear(z, z));
-  }
 }
 
 ObjectCondition VectorFieldImpl::condition(const torch::Tensor& z) const {
@@ -47,7 +37,7 @@ ObjectCondition VectorFieldImpl::condition(const torch::Tensor& z) const {
   const auto& first = *layers.front();
   const auto weights = torch::cat({lift->weight.narrow(1, 0, zc), first.packed_weight(0, zc)});
   const auto z_last = z.transpose(1, 2);
-  ObjectCondition condition{torch::linear(z_last, weights), {}, {}, {}};
+  ObjectCondition condition{torch::linear(z_last, weights), {}};
   if (options_.z_every_layer) {
     for (std::size_t l = 1; l < layers.size(); ++l) {
       const auto& layer = *layers[l];
@@ -55,23 +45,7 @@ ObjectCondition VectorFieldImpl::condition(const torch::Tensor& z) const {
       condition.layer_terms.push_back(torch::linear(z_last, layer.packed_weight(in, zc)));
     }
   }
-  if (options_.z_attention_heads > 0) {
-    condition.keys = torch::linear(z_last, key->weight);
-    condition.values = z_last;
-  }
   return condition;
-}
-
-torch::Tensor VectorFieldImpl::attend(const ObjectCondition& condition,
-                                      const torch::Tensor& object_index, const torch::Tensor& h,
-                                      const torch::Tensor& keep_z) const {
-  // Scores are inner products of vectors that rotate together, so the weights are invariant and
-  // the weighted sums of z rotate with it.
-  const auto queries = torch::linear(h, query->weight);                            // [G, 3, H]
-  const auto keys = condition.keys.index_select(0, object_index);                  // [G, 3, Z]
-  const auto scores = torch::bmm(queries.transpose(1, 2), keys) / std::sqrt(3.0);  // [G, H, Z]
-  const auto values = condition.values.index_select(0, object_index);              // [G, 3, Z]
-  return keep_z * torch::bmm(values, torch::softmax(scores, -1).transpose(1, 2));
 }
 
 Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
@@ -95,11 +69,6 @@ Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
                       object_index.dim() == 1 && object_index.size(0) == g,
                   "VectorField: object_index must be an int64 tensor [" + std::to_string(g) + "]");
   const int64_t objects = condition.z_terms.size(0);
-  const int64_t heads = options_.z_attention_heads;
-  if (heads > 0) {
-    detail::require_shape(condition.keys, "VectorField: condition.keys", {objects, 3, zc});
-    detail::require_shape(condition.values, "VectorField: condition.values", {objects, 3, zc});
-  }
   detail::require(g == 0 || (object_index.min().item<int64_t>() >= 0 &&
                              object_index.max().item<int64_t>() < objects),
                   "VectorField: object_index must lie in [0, " + std::to_string(objects) + ")");
@@ -118,19 +87,11 @@ Velocity VectorFieldImpl::forward(const ObjectCondition& condition,
                     torch::linear(lifted, first.packed_weight(zc + kPoseVectors, 1));
   auto h = vn_leaky_relu_packed(both, hidden, first.slope);  // channels last, [G, 3, ·]
   for (std::size_t l = 1; l < layers.size(); ++l) {
-    // With z_every_layer, z's term (gathered per grasp) joins h's before the activation, and so
-    // do the attended vectors' in the second layer.
-    auto extra = options_.z_every_layer
-                     ? keep_z * condition.layer_terms[l - 1].index_select(0, object_index)
-                     : torch::Tensor();
-    if (l == 1 && heads > 0) {
-      // The attended vectors' term; their input channels follow h's and z's.
-      const int64_t offset = h.size(2) + (options_.z_every_layer ? zc : 0);
-      const auto attended = torch::linear(attend(condition, object_index, h, keep_z),
-                                          layers[1]->packed_weight(offset, heads));
-      extra = extra.defined() ? extra + attended : attended;
-    }
-    h = layers[l]->forward_channels_last(h, extra);
+    // With z_every_layer, z's term (gathered per grasp) joins h's before the activation.
+    const auto z_term = options_.z_every_layer
+                            ? keep_z * condition.layer_terms[l - 1].index_select(0, object_index)
+                            : torch::Tensor();
+    h = layers[l]->forward_channels_last(h, z_term);
   }
   const auto velocity = out->forward(h.transpose(1, 2));  // [G, 2, 3]
   return {velocity.select(1, 0), velocity.select(1, 1)};

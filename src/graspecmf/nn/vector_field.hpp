@@ -3,10 +3,7 @@
 // (docs METHOD.md §4). Inputs per grasp: its object's z (Z vectors), the pose (R's columns r1, r2,
 // r3 and p) and the time t, lifted to the vector t·f_equi([z, r1, r2, r3, p]). The input list
 // [z, r1, r2, r3, p, t·f_equi] (Z + 5 vectors) runs through a VN-MLP to (ω, v). With
-// z_every_layer (not in the paper) every later hidden layer takes [h, z] too. With
-// z_attention_heads = H (not in the paper) the second hidden layer also takes H vectors read from
-// z by attention: H queries W_q h₁, keys W_k z, softmax over z of the invariant scores ⟨q, k⟩/√3,
-// values z; so the grasp chooses which of its object's vectors to use.
+// z_every_layer (not in the paper) every later hidden layer takes [h, z] too.
 
 #include <torch/nn/module.h>
 #include <torch/nn/pimpl.h>
@@ -23,8 +20,6 @@ struct VectorFieldOptions {
   std::vector<int64_t> hidden_widths{256, 256, 128, 128, 128};  // VN-Linear+LeakyReLU layers
   double slope = kDefaultSlope;                                 // VN-LeakyReLU negative slope
   bool z_every_layer = false;  // z is also an input of hidden layers 2, 3, … (paper: first only)
-  int64_t z_attention_heads =
-      0;  // > 0: hidden layer 2 also reads this many vectors attended from z
 };
 
 // The parts of the layers that depend on z, computed once per object.
@@ -32,8 +27,6 @@ struct ObjectCondition {
   torch::Tensor z_terms;  // [O, 3, 1 + 2·hidden_widths[0]], channels last: f_equi, W_f, W_d
   // With z_every_layer, hidden layer l ≥ 1's [O, 3, 2·hidden_widths[l]] (W_f, W_d) at l − 1.
   std::vector<torch::Tensor> layer_terms;
-  // With z_attention_heads > 0: the keys W_k z and the values z, both [O, 3, Z].
-  torch::Tensor keys, values;
 };
 
 // Velocities per grasp, both [G, 3] and in the same (scaled) units as the inputs.
@@ -44,8 +37,7 @@ struct Velocity {
 
 class VectorFieldImpl : public torch::nn::Module {
  public:
-  // Throws Error on an empty width list, a non-positive width or z_channels, negative
-  // z_attention_heads, or attention heads with fewer than two hidden layers.
+  // Throws Error on an empty width list or a non-positive width or z_channels.
   explicit VectorFieldImpl(VectorFieldOptions options = {});
 
   // z [O, Z, 3] → the z terms of O objects. Throws Error on a wrong shape.
@@ -63,19 +55,12 @@ class VectorFieldImpl : public torch::nn::Module {
 
   // Input channels: z at [0, Z), r1, r2, r3, p at [Z, Z + 4) and t·f_equi at Z + 4.
   VNLinear lift{nullptr};  // f_equi: the first Z + 4 inputs → 1 vector
-  // The VN-MLP; layers[0] takes the Z + 5 inputs, a later one the previous layer's output, then
-  // z with z_every_layer, then (layers[1] only) the attended vectors with z_attention_heads.
+  // The VN-MLP; layers[0] takes the Z + 5 inputs, a later one the previous layer's output and,
+  // with z_every_layer, z after it.
   std::vector<VNLinearLeakyReLU> layers;
-  VNLinear query{nullptr};  // with z_attention_heads: hidden_widths[0] → H query vectors
-  VNLinear key{nullptr};    // with z_attention_heads: Z → Z key vectors
-  VNLinear out{nullptr};    // → 2 vectors: ω, v
+  VNLinear out{nullptr};  // → 2 vectors: ω, v
 
  private:
-  // The H vectors [G, 3, H] each grasp reads from its object's z, given h₁ [G, 3, ·]; zero where
-  // keep_z is.
-  torch::Tensor attend(const ObjectCondition& condition, const torch::Tensor& object_index,
-                       const torch::Tensor& h, const torch::Tensor& keep_z) const;
-
   VectorFieldOptions options_;
 };
 TORCH_MODULE(VectorField);

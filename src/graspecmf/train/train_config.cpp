@@ -53,12 +53,6 @@ void validate(const TrainConfig& c) {
   if (!positive_widths(c.model.field.hidden_widths)) {
     throw Error("train config: field hidden_widths must be positive");
   }
-  const int64_t heads = c.model.field.z_attention_heads;
-  if (heads < 0 || (heads > 0 && c.model.field.hidden_widths.size() < 2)) {
-    throw Error(
-        "train config: model.field.z_attention_heads must be ≥ 0, and > 0 needs two or "
-        "more hidden layers");
-  }
   if (c.data.objects_per_step < 1) throw Error("train config: objects_per_step must be ≥ 1");
   if (!(c.data.position_scale > 0)) throw Error("train config: position_scale must be > 0");
   if (!(c.data.stretch >= 0 && c.data.stretch < 0.5)) {
@@ -97,8 +91,7 @@ json to_json(const TrainConfig& c) {
             {"field",
              {{"hidden_widths", c.model.field.hidden_widths},
               {"slope", c.model.field.slope},
-              {"z_every_layer", c.model.field.z_every_layer},
-              {"z_attention_heads", c.model.field.z_attention_heads}}}}},
+              {"z_every_layer", c.model.field.z_every_layer}}}}},
           {"data",
            {{"objects_per_step", c.data.objects_per_step},
             {"grasps_per_object", c.data.grasps_per_object},
@@ -145,11 +138,10 @@ TrainConfig train_config_from_json(const json& j) {
     }
     if (m.contains("field")) {
       const json& f = m["field"];
-      only(f, {"hidden_widths", "slope", "z_every_layer", "z_attention_heads"}, "model.field.");
+      only(f, {"hidden_widths", "slope", "z_every_layer"}, "model.field.");
       read(f, "hidden_widths", c.model.field.hidden_widths, "model.field.");
       read(f, "slope", c.model.field.slope, "model.field.");
       read(f, "z_every_layer", c.model.field.z_every_layer, "model.field.");
-      read(f, "z_attention_heads", c.model.field.z_attention_heads, "model.field.");
     }
   }
   if (j.contains("data")) {
