@@ -324,16 +324,17 @@ void run_evaluate(const EvaluateArgs& a) {
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
+    const train::ObjectFilter filter = train::object_filter(object, a.checks, a.seed);
     const train::ObjectEvaluation e =
         train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
-                               settings, a.seed, a.checks);
+                               settings, a.seed, filter);
     json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
     table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
                          e.emd[1], e.emd[2], e.mean_emd);
     std::optional<train::BaselineEvaluation> baseline;
     if (a.baselines) {
       const train::BaselineEvaluation& b =
-          baseline.emplace(train::evaluate_baselines(object, *shapes, n, a.seed, a.checks));
+          baseline.emplace(train::evaluate_baselines(object, *shapes, n, a.seed, filter));
       entry["random_emd"] = b.random_emd;
       entry["nearest_training_object"] = b.nearest;
       entry["nearest_emd"] = b.nearest_emd;

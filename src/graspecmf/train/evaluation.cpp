@@ -46,29 +46,33 @@ std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::si
   return grasps;
 }
 
+ObjectFilter object_filter(const data::GraspObject& object, const gripper::GraspChecks& checks,
+                           std::uint64_t seed) {
+  return {checks,
+          checks.any() ? gripper::filter_cloud(object.mesh, seed) : std::vector<Eigen::Vector3d>{}};
+}
+
 ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
                                  const SamplingSettings& settings, std::uint64_t seed,
-                                 const gripper::GraspChecks& checks) {
+                                 const ObjectFilter& filter) {
   ObjectEvaluation result;
   result.name = object.name;
   const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
   result.n = reference.size();
   const geometry::SurfacePoints cloud = geometry::sample_surface(
       object.mesh, static_cast<std::size_t>(config.model.encoder.points), seed + 1);
-  const std::vector<Eigen::Vector3d> filter_points =
-      checks.any() ? gripper::filter_cloud(object.mesh, seed) : std::vector<Eigen::Vector3d>{};
   for (std::size_t r = 0; r < rotations.size(); ++r) {
     const Eigen::Matrix3d& g = rotations[r];
     const std::vector<Eigen::Vector3d> rotated_cloud = rotated(cloud.points, g);
     std::vector<lie::Pose> rotated_reference;
     for (const lie::Pose& x : reference) rotated_reference.push_back({g * x.R, g * x.p});
-    std::optional<gripper::CloudGraspFilter> filter;
-    if (checks.any()) filter.emplace(rotated(filter_points, g), checks);
+    std::optional<gripper::CloudGraspFilter> rotated_filter;
+    if (filter.checks.any()) rotated_filter.emplace(rotated(filter.points, g), filter.checks);
     const std::vector<lie::Pose> generated =
         sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
-                      filter ? &*filter : nullptr);
+                      rotated_filter ? &*rotated_filter : nullptr);
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
     std::vector<lie::Pose>& kept = result.generated.emplace_back();
     for (const lie::Pose& x : generated) kept.push_back({g.transpose() * x.R, g.transpose() * x.p});
@@ -124,7 +128,7 @@ const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object
 
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed, const gripper::GraspChecks& checks) {
+                                      std::uint64_t seed, const ObjectFilter& filter) {
   BaselineEvaluation result;
   const std::vector<lie::Pose> shuffled = shuffled_grasps(object, seed);
   const auto slice = [&](std::size_t offset, std::size_t count) {
@@ -144,12 +148,12 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   const data::GraspObject& nearest = training.nearest(object, centroid, neighbour_centroid);
   result.nearest = nearest.name;
   std::vector<lie::Pose> moved;
-  std::optional<gripper::CloudGraspFilter> filter;
-  if (checks.any()) filter.emplace(gripper::filter_cloud(object.mesh, seed), checks);
+  std::optional<gripper::CloudGraspFilter> grasp_filter;
+  if (filter.checks.any()) grasp_filter.emplace(filter.points, filter.checks);
   for (lie::Pose g : shuffled_grasps(nearest, seed)) {
     if (moved.size() == result.n) break;
     g.p += centroid - neighbour_centroid;
-    if (!filter || filter->keeps(g)) moved.push_back(g);
+    if (!grasp_filter || grasp_filter->keeps(g)) moved.push_back(g);
   }
   if (moved.empty()) {
     throw Error(

@@ -29,15 +29,26 @@ std::vector<lie::Pose> shuffled_grasps(const data::GraspObject& object, std::uin
 // The first n of shuffled_grasps (all of them if fewer).
 std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::size_t n,
                                         std::uint64_t seed);
+// Grasp checks on one object and the cloud they run on, in the object's frame.
+struct ObjectFilter {
+  gripper::GraspChecks checks;
+  std::vector<Eigen::Vector3d>
+      points;  // gripper::filter_cloud of its mesh; empty if no check is on
+};
+// The object's filter for these checks, its cloud drawn with the seed (drawn once per object and
+// shared by the model's and the baselines' evaluation).
+ObjectFilter object_filter(const data::GraspObject& object, const gripper::GraspChecks& checks,
+                           std::uint64_t seed);
+
 // For each rotation g: the object's seeded cloud and reference grasps rotated by g, n grasps
-// sampled from the model for the rotated cloud (with checks, only ones that a filter on the rotated
-// gripper::filter_cloud keeps), and their EMD to the rotated reference; the generated grasps are
-// kept, in the object's frame.
+// sampled from the model for the rotated cloud (with checks, only ones that the filter, rotated by
+// g, keeps), and their EMD to the rotated reference; the generated grasps are kept, in the
+// object's frame.
 ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
                                  const TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
                                  const SamplingSettings& settings, std::uint64_t seed,
-                                 const gripper::GraspChecks& checks = {});
+                                 const ObjectFilter& filter = {});
 
 struct BaselineEvaluation {
   std::size_t n = 0;          // grasps compared
@@ -74,10 +85,10 @@ class TrainingShapes {
 // EMD unchanged, so one value stands for every test rotation): n grasps with Haar-random rotations
 // and positions uniform in the object's bounding box grown by the pad-centre distance (grasp
 // frames sit that far from the surface); and the successful grasps of the other training object
-// with the smallest Chamfer distance between centred seeded clouds (with checks, only those that a
-// filter on the object's gripper::filter_cloud keeps). Also the sampling floor.
+// with the smallest Chamfer distance between centred seeded clouds (with checks, only those that
+// the object's filter keeps). Also the sampling floor.
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed, const gripper::GraspChecks& checks = {});
+                                      std::uint64_t seed, const ObjectFilter& filter = {});
 
 }  // namespace graspecmf::train
