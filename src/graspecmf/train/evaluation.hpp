@@ -32,8 +32,8 @@ std::vector<lie::Pose> reference_grasps(const data::GraspObject& object, std::si
 // Grasp checks on one object and the cloud they run on, in the object's frame.
 struct ObjectFilter {
   gripper::GraspChecks checks;
-  std::vector<Eigen::Vector3d>
-      points;  // gripper::filter_cloud of its mesh; empty if no check is on
+  // gripper::filter_cloud of the object's mesh; empty if no check is on.
+  std::vector<Eigen::Vector3d> points;
 };
 // The object's filter for these checks, its cloud drawn with the seed (drawn once per object and
 // shared by the model's and the baselines' evaluation).
