@@ -62,15 +62,17 @@ TEST_F(EncoderTest, FusedEdgeLayerMatchesPerEdgeLayer) {
   };
   const auto f = split(layer->feature->weight), d = split(layer->direction->weight);
   const auto weights = torch::cat({f[0], f[1], d[0], d[1]});
-  const auto actual =
-      edge_mean_leaky_relu(torch::linear(v.transpose(-1, -2), weights), index, layer->slope)
-          .transpose(-1, -2);
-  const auto actual_grads = torch::autograd::grad(
-      {(actual * upstream).sum()}, {v, layer->feature->weight, layer->direction->weight});
+  // The fused CPU kernel, and the gathering path that other devices take.
+  for (const auto aggregate : {&edge_mean_leaky_relu, &edge_mean_leaky_relu_any_device}) {
+    const auto actual = aggregate(torch::linear(v.transpose(-1, -2), weights), index, layer->slope)
+                            .transpose(-1, -2);
+    const auto actual_grads = torch::autograd::grad(
+        {(actual * upstream).sum()}, {v, layer->feature->weight, layer->direction->weight});
 
-  EXPECT_LT(relative_error(actual, expected), 1e-5);
-  for (std::size_t p = 0; p < expected_grads.size(); ++p) {
-    EXPECT_LT(relative_error(actual_grads[p], expected_grads[p]), 1e-4) << "gradient " << p;
+    EXPECT_LT(relative_error(actual, expected), 1e-5);
+    for (std::size_t p = 0; p < expected_grads.size(); ++p) {
+      EXPECT_LT(relative_error(actual_grads[p], expected_grads[p]), 1e-4) << "gradient " << p;
+    }
   }
 }
 

@@ -101,19 +101,23 @@ TEST_F(VnLayersTest, ChannelsLastPrefixPlusTheRestsTermMatchesTheFullInput) {
 }
 
 TEST_F(VnLayersTest, PackedLeakyReLUMatchesTheReferenceAndItsGradients) {
-  for (const int64_t directions : {int64_t{7}, int64_t{1}}) {
-    const auto q = torch::randn({50, 7, 3}, torch::requires_grad());
-    const auto d = torch::randn({50, directions, 3}, torch::requires_grad());
-    const auto upstream = torch::randn({50, 7, 3});
-    const auto expected = reference_leaky_relu(q, d, 0.2);
-    expected.backward(upstream);
-    const auto packed = pack(q.detach(), d.detach()).requires_grad_();
-    const auto out = vn_leaky_relu_packed(packed, 7, 0.2);
-    EXPECT_TRUE(torch::allclose(out.transpose(1, 2), expected, 1e-5, 1e-6)) << directions;
-    out.backward(upstream.transpose(1, 2).contiguous());
-    const auto grad = packed.grad().transpose(1, 2);  // [50, 7 + D, 3]
-    EXPECT_TRUE(torch::allclose(grad.narrow(1, 0, 7), q.grad(), 1e-4, 1e-5)) << directions;
-    EXPECT_TRUE(torch::allclose(grad.narrow(1, 7, directions), d.grad(), 1e-4, 1e-5)) << directions;
+  // The CPU kernel, and the tensor-operation path that other devices take.
+  for (const auto leaky_relu : {&vn_leaky_relu_packed, &vn_leaky_relu_packed_any_device}) {
+    for (const int64_t directions : {int64_t{7}, int64_t{1}}) {
+      const auto q = torch::randn({50, 7, 3}, torch::requires_grad());
+      const auto d = torch::randn({50, directions, 3}, torch::requires_grad());
+      const auto upstream = torch::randn({50, 7, 3});
+      const auto expected = reference_leaky_relu(q, d, 0.2);
+      expected.backward(upstream);
+      const auto packed = pack(q.detach(), d.detach()).requires_grad_();
+      const auto out = leaky_relu(packed, 7, 0.2);
+      EXPECT_TRUE(torch::allclose(out.transpose(1, 2), expected, 1e-5, 1e-6)) << directions;
+      out.backward(upstream.transpose(1, 2).contiguous());
+      const auto grad = packed.grad().transpose(1, 2);  // [50, 7 + D, 3]
+      EXPECT_TRUE(torch::allclose(grad.narrow(1, 0, 7), q.grad(), 1e-4, 1e-5)) << directions;
+      EXPECT_TRUE(torch::allclose(grad.narrow(1, 7, directions), d.grad(), 1e-4, 1e-5))
+          << directions;
+    }
   }
   EXPECT_THROW(vn_leaky_relu_packed(torch::randn({5, 3, 9}), 4, 0.2), Error);
   EXPECT_THROW(vn_leaky_relu_packed(torch::randn({5, 2, 8}), 4, 0.2), Error);
@@ -177,13 +181,16 @@ TEST_F(KnnTest, MatchesBruteForce) {
   for (const Case c :
        {Case{2, 64, 12, 9}, Case{1, 300, 6, 40}, Case{1, 50, 3, 1}, Case{1, 50, 3, 50}}) {
     const auto features = torch::randn({c.batch, c.n, c.d});
-    const auto index = knn(features, c.k);
-    ASSERT_EQ(index.sizes(), (std::vector<int64_t>{c.batch, c.n, c.k}));
-    ASSERT_EQ(index.scalar_type(), torch::kLong);
-    for (int64_t b = 0; b < c.batch; ++b) {
-      for (int64_t i = 0; i < c.n; ++i) {
-        ASSERT_EQ(row(index, b, i), brute_force_knn(features, b, i, c.k))
-            << "n " << c.n << " k " << c.k << " row " << b << ", " << i;
+    // The CPU selection, and the topk path that other devices take.
+    for (const auto select : {&knn, &knn_any_device}) {
+      const auto index = select(features, c.k);
+      ASSERT_EQ(index.sizes(), (std::vector<int64_t>{c.batch, c.n, c.k}));
+      ASSERT_EQ(index.scalar_type(), torch::kLong);
+      for (int64_t b = 0; b < c.batch; ++b) {
+        for (int64_t i = 0; i < c.n; ++i) {
+          ASSERT_EQ(row(index, b, i), brute_force_knn(features, b, i, c.k))
+              << "n " << c.n << " k " << c.k << " row " << b << ", " << i;
+        }
       }
     }
   }

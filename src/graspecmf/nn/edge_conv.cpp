@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "graspecmf/nn/checks.hpp"
+#include "graspecmf/nn/vn_layers.hpp"
 #include "graspecmf/nn/vn_leaky_relu_math.hpp"
 
 namespace graspecmf::nn {
@@ -166,12 +167,28 @@ at::Tensor edge_mean_leaky_relu(const at::Tensor& per_point, const at::Tensor& i
   detail::require(
       index.defined() && index.scalar_type() == at::kLong && index.dim() == 3 &&
           index.size(0) == per_point.size(0) && index.size(1) == per_point.size(1) &&
-          index.size(2) >= 1,
-      "edge_mean_leaky_relu: index must be an int64 tensor [B, N, k] matching per_point");
+          index.size(2) >= 1 && index.device() == per_point.device(),
+      "edge_mean_leaky_relu: index must be an int64 tensor [B, N, k] matching per_point and on its "
+      "device");
   detail::require(index.numel() == 0 || (index.min().item<int64_t>() >= 0 &&
                                          index.max().item<int64_t>() < per_point.size(1)),
                   "edge_mean_leaky_relu: index holds a point outside [0, N)");
+  if (!per_point.is_cpu()) return edge_mean_leaky_relu_any_device(per_point, index, slope);
   return EdgeMeanLeakyReLU::apply(per_point, index, slope);
+}
+
+at::Tensor edge_mean_leaky_relu_any_device(const at::Tensor& per_point, const at::Tensor& index,
+                                           double slope) {
+  const int64_t batch = per_point.size(0), n = per_point.size(1), k = index.size(2);
+  const int64_t c = per_point.size(3) / 4;
+  const auto offsets = at::arange(batch, index.options()).view({batch, 1, 1}) * n;
+  const auto neighbours = per_point.reshape({batch * n, 3, 4 * c})
+                              .index_select(0, (index + offsets).reshape({-1}))
+                              .view({batch, n, k, 3, 4 * c});
+  const auto centre = per_point.unsqueeze(2);
+  const auto q = neighbours.narrow(-1, 0, c) + centre.narrow(-1, c, c);
+  const auto d = neighbours.narrow(-1, 2 * c, c) + centre.narrow(-1, 3 * c, c);
+  return vn_leaky_relu_packed_any_device(at::cat({q, d}, -1), c, slope).mean(2);
 }
 
 }  // namespace graspecmf::nn

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "graspecmf/nn/checks.hpp"
@@ -92,7 +93,8 @@ at::Tensor knn(const at::Tensor& features, int64_t k) {
   const auto x = features.detach().contiguous();
   detail::require(at::isfinite(x).all().item<bool>(), "knn: features contain NaN or infinity");
 
-  // Row i ranks its neighbours j by ‖x_j‖² − 2 x_i·x_j, which is ‖x_i − x_j‖² less a constant.
+  if (!x.is_cpu()) return knn_any_device(x, k);
+
   const auto squared_norms = x.pow(2).sum(-1).contiguous();
   const auto inner = at::bmm(x, x.transpose(1, 2)).contiguous();
   auto index = at::empty({batch, n, k}, x.options().dtype(at::kLong));
@@ -100,6 +102,7 @@ at::Tensor knn(const at::Tensor& features, int64_t k) {
   const float* inner_data = inner.data_ptr<float>();
   int64_t* index_data = index.data_ptr<int64_t>();
 
+  // Row i ranks its neighbours j by ‖x_j‖² − 2 x_i·x_j, which is ‖x_i − x_j‖² less a constant.
   at::parallel_for(0, batch * n, 64, [&](int64_t begin, int64_t end) {
     std::vector<float> keys(static_cast<std::size_t>(n));
     std::vector<Candidate> window;
@@ -118,6 +121,14 @@ at::Tensor knn(const at::Tensor& features, int64_t k) {
     }
   });
   return index;
+}
+
+at::Tensor knn_any_device(const at::Tensor& features, int64_t k) {
+  at::NoGradGuard no_grad;
+  const auto x = features.detach();
+  auto keys = x.pow(2).sum(-1).unsqueeze(1) - 2.0 * at::bmm(x, x.transpose(1, 2));
+  keys.diagonal(0, 1, 2).fill_(-kInfinity);  // the row itself first
+  return std::get<1>(keys.topk(k, -1, /*largest=*/false, /*sorted=*/true));
 }
 
 }  // namespace graspecmf::nn

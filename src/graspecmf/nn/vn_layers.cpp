@@ -174,7 +174,17 @@ torch::Tensor vn_leaky_relu_packed(const torch::Tensor& packed, int64_t channels
                       (packed.size(-1) == 2 * channels || packed.size(-1) == channels + 1),
                   "vn_leaky_relu_packed: packed must be a float32 tensor [..., 3, " +
                       std::to_string(channels) + " + " + std::to_string(channels) + " or 1]");
+  if (!packed.is_cpu()) return vn_leaky_relu_packed_any_device(packed, channels, slope);
   return PackedLeakyReLU::apply(packed, channels, slope);
+}
+
+torch::Tensor vn_leaky_relu_packed_any_device(const torch::Tensor& packed, int64_t channels,
+                                              double slope) {
+  const auto q = packed.narrow(-1, 0, channels);
+  const auto d = packed.narrow(-1, channels, packed.size(-1) - channels);  // C or 1 columns
+  const auto dot = (q * d).sum(-2, true);
+  const auto norm2 = d.pow(2).sum(-2, true) + detail::kDirectionEpsilon;
+  return q - (1.0 - slope) * dot.clamp_max(0.0) / norm2 * d;
 }
 
 torch::Tensor vn_mean_pool(const torch::Tensor& v, int64_t dim) {

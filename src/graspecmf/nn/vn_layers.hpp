@@ -27,7 +27,12 @@ TORCH_MODULE(VNLinear);
 // columns and their directions d in the last D (= C, or 1 shared by all channels); returns
 // [..., 3, C], q − (1−slope)·min(⟨q,d⟩,0)/(‖d‖²+1e-6)·d. One fused pass forward and backward
 // (first-order gradients). Throws Error unless packed is float32 [..., 3, C + C or C + 1].
+// CPU tensors take a hand-written kernel; others (CUDA) vn_leaky_relu_packed_any_device.
 torch::Tensor vn_leaky_relu_packed(const torch::Tensor& packed, int64_t channels, double slope);
+
+// The same map in tensor operations on any device (autograd differentiates it); unchecked.
+torch::Tensor vn_leaky_relu_packed_any_device(const torch::Tensor& packed, int64_t channels,
+                                              double slope);
 
 // Mean of a VN feature over a non-vector axis `dim` (neighbours, points): equivariant pooling.
 torch::Tensor vn_mean_pool(const torch::Tensor& v, int64_t dim);
