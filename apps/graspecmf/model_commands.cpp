@@ -28,6 +28,7 @@
 #include "graspecmf/metrics/paired_comparison.hpp"
 #include "graspecmf/sim/batch.hpp"
 #include "graspecmf/sim/scene_object.hpp"
+#include "graspecmf/train/device.hpp"
 #include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
@@ -93,6 +94,12 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
                   "Classifier-free guidance weight (0 = unconditional; default: the run's)");
 }
 
+void add_device_option(CLI::App* cmd, std::string& device) {
+  cmd->add_option("--device", device,
+                  "cpu (default), or cuda / cuda:N with a CUDA build of LibTorch; results match "
+                  "the CPU's to rounding");
+}
+
 // --reject-collisions and --reject-shallow, checking `whose` grasps against `points`.
 void add_filter_flags(CLI::App* cmd, gripper::GraspChecks& checks, const std::string& whose,
                       const std::string& points) {
@@ -123,6 +130,7 @@ struct SampleArgs {
   gripper::GraspChecks checks;
   std::size_t num = 100;
   int threads = kDefaultThreads;
+  std::string device = "cpu";
   std::uint64_t seed = 0;
 };
 
@@ -170,7 +178,8 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
 
 void run_sample(const SampleArgs& a) {
   at::set_num_threads(a.threads);
-  const train::TrainedModel trained = train::load_trained_model(a.model);
+  const train::TrainedModel trained =
+      train::load_trained_model(a.model, train::parse_device(a.device));
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
   const SampleInput input = sample_input(a, points);
@@ -208,6 +217,7 @@ struct EvaluateArgs {
   std::size_t success = 0;  // grasps simulated per object and rotation; 0: no simulation
   std::uint64_t seed = 0;
   int threads = kDefaultThreads;
+  std::string device = "cpu";
 };
 
 // The objects of one split of a dataset folder with splits.json.
@@ -290,7 +300,8 @@ nlohmann::json comparison_json(const metrics::PairedComparison& c) {
 
 void run_evaluate(const EvaluateArgs& a) {
   at::set_num_threads(a.threads);
-  const train::TrainedModel trained = train::load_trained_model(a.model);
+  const train::TrainedModel trained =
+      train::load_trained_model(a.model, train::parse_device(a.device));
   const std::vector<data::GraspObject> objects = evaluation_objects(a);
   std::vector<data::GraspObject> training;
   std::optional<train::TrainingShapes> shapes;
@@ -469,6 +480,7 @@ void add_model_commands(CLI::App& app) {
                    "the mesh)");
   sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
   sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  add_device_option(sample_cmd, s->device);
   sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
   sample_cmd->callback([s] { run_sample(*s); });
 
@@ -486,6 +498,7 @@ void add_model_commands(CLI::App& app) {
                    "a dense surface sample of the object");
   eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
   eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  add_device_option(eval_cmd, e->device);
   eval_cmd->add_flag("--baselines", e->baselines,
                      "Also report random grasps, the nearest training object's grasps and the "
                      "sampling floor (two disjoint draws of the object's own grasps; needs 2n)");

@@ -40,9 +40,10 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_TRUE(fs::exists(dir / "run/checkpoint.pt"));
 
   const std::string out = (dir / "grasps.h5").string();
-  const auto sampled = run("sample --model " + run_dir + " --mesh " +
-                               (data / "meshes/Box/b0.obj").string() + " --num 7 --out " + out,
-                           dir);
+  const auto sampled =
+      run("sample --model " + run_dir + " --mesh " + (data / "meshes/Box/b0.obj").string() +
+              " --num 7 --device cpu --out " + out,
+          dir);
   ASSERT_EQ(sampled.exit_code, 0) << sampled.err;
   const graspecmf::data::AcronymGraspFile record = graspecmf::data::read_acronym_file(out);
   EXPECT_EQ(record.size(), 7u);
@@ -200,6 +201,10 @@ TEST(CliModel, BadInput) {
                         "different model configuration");
   expect_one_error_line(run("evaluate --model " + run_dir, dir),
                         "exactly one of --data or --acronym");
+  expect_one_error_line(
+      run("evaluate --model " + run_dir + " --data " + data.string() + " --split val --device tpu",
+          dir),
+      "unknown device 'tpu'");
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "graspecmf/lie/rotation_sets.hpp"
 #include "graspecmf/metrics/emd.hpp"
 #include "graspecmf/train/checkpoint.hpp"
+#include "graspecmf/train/device.hpp"
 #include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
@@ -150,6 +151,35 @@ TEST(Sampling, GraspsFollowTheCloudsPosition) {
   EXPECT_THROW(sample_grasps(model, {}, config, 5, config.sampling, 9), Error);
   cloud[3].x() = std::nan("");
   EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9), Error);
+}
+
+TEST(Device, NamesParseAndCudaNeedsAGpu) {
+  EXPECT_EQ(parse_device("cpu"), c10::Device(c10::kCPU));
+  EXPECT_THROW(parse_device("tpu"), Error);
+  EXPECT_THROW(parse_device("cudax"), Error);
+  EXPECT_THROW(parse_device("cuda:many"), Error);
+  if (torch::cuda::is_available()) {
+    EXPECT_EQ(parse_device("cuda"), c10::Device(c10::kCUDA));
+    EXPECT_THROW(parse_device("cuda:" + std::to_string(torch::cuda::device_count())), Error);
+  } else {
+    EXPECT_THROW(parse_device("cuda"), Error);
+    EXPECT_THROW(parse_device("cuda:0"), Error);
+  }
+}
+
+TEST(Sampling, GpuGraspsMatchTheCpusForOneSeed) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA GPU visible to LibTorch";
+  torch::manual_seed(1);
+  const TrainConfig config = tiny_config();
+  nn::GraspFlowModel model(config.model);
+  const std::vector<Eigen::Vector3d> cloud = normal_cloud(1.0);
+  const auto cpu = sample_grasps(model, cloud, config, 20, config.sampling, 9);
+  model->to(torch::kCUDA);
+  const auto gpu = sample_grasps(model, cloud, config, 20, config.sampling, 9);
+  for (std::size_t i = 0; i < cpu.size(); ++i) {
+    EXPECT_LT((gpu[i].p - cpu[i].p).norm(), 1e-4) << i;
+    EXPECT_LT((gpu[i].R - cpu[i].R).norm(), 1e-4) << i;
+  }
 }
 
 TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {

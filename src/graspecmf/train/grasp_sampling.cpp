@@ -21,7 +21,7 @@ flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
   torch::NoGradGuard no_grad;
   const flow::ConditionalField field = [&](const flow::PoseBatch& x, const at::Tensor& t,
                                            const at::Tensor& keep) {
-    const at::Tensor object = torch::zeros({x.R.size(0)}, torch::kLong);
+    const at::Tensor object = torch::zeros({x.R.size(0)}, x.R.options().dtype(torch::kLong));
     const nn::Velocity velocity = model->forward(condition, object, x.R, x.p, t, keep);
     return std::make_pair(velocity.omega, velocity.v);
   };
@@ -75,19 +75,21 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
     }
   }
   torch::NoGradGuard no_grad;
-  const nn::ObjectCondition condition = model->condition(points.unsqueeze(0));
+  // The prior is drawn on the CPU, so a seed gives the same grasps on every device.
+  const c10::Device device = model->parameters().front().device();
+  const nn::ObjectCondition condition = model->condition(points.unsqueeze(0).to(device));
   std::vector<lie::Pose> grasps;
   std::size_t drawn = 0;
   for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {
     const std::size_t count =
         round == 0 ? n : next_round_size(n, n - grasps.size(), grasps.size(), drawn);
     at::Generator generator = flow::make_generator(round == 0 ? seed : round_seed(seed, round));
-    const flow::PoseBatch x1 = integrate_condition(
-        model, condition,
-        flow::sample_prior(static_cast<int64_t>(count), config.prior_position_std, generator),
-        settings);
-    const at::Tensor R = x1.R.to(torch::kDouble).contiguous();
-    const at::Tensor p = x1.p.to(torch::kDouble).contiguous();
+    const flow::PoseBatch x0 =
+        flow::sample_prior(static_cast<int64_t>(count), config.prior_position_std, generator);
+    const flow::PoseBatch x1 =
+        integrate_condition(model, condition, {x0.R.to(device), x0.p.to(device)}, settings);
+    const at::Tensor R = x1.R.to(torch::kCPU, torch::kDouble).contiguous();
+    const at::Tensor p = x1.p.to(torch::kCPU, torch::kDouble).contiguous();
     drawn += count;
     for (std::size_t g = 0; g < count && grasps.size() < n; ++g) {
       lie::Pose grasp;

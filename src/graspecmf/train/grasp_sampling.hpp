@@ -20,11 +20,12 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
 
 // n grasps for a cloud in metres (any frame, ≥ k points): centred on its centroid and scaled by
 // position_scale for the network, the prior drawn from seed; returned as T_object_gripper in the
-// cloud's frame, metres. With a `filter`, only grasps it keeps are returned: the first round draws
-// n (the grasps of the unfiltered call), later ones the missing count over the kept fraction so
-// far, with a quarter to spare (64 to 64 n grasps), and Error is thrown if fewer than n are kept
-// after kMaxSamplingRounds.
-// Throws Error for an empty or non-finite cloud or n = 0.
+// cloud's frame, metres. Runs on the model's device; the prior is drawn on the CPU, so a seed
+// gives the same grasps (to rounding) on every device. With a `filter`, only grasps it keeps are
+// returned: the first round draws n (the grasps of the unfiltered call), later ones the missing
+// count over the kept fraction so far, with a quarter to spare (64 to 64 n grasps), and Error is
+// thrown if fewer than n are kept after kMaxSamplingRounds. Throws Error for an empty or non-finite
+// cloud or n = 0.
 inline constexpr int kMaxSamplingRounds = 8;
 std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
                                      const std::vector<Eigen::Vector3d>& cloud,

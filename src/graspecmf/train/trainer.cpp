@@ -253,7 +253,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   return result;
 }
 
-TrainedModel load_trained_model(const fs::path& run_dir) {
+TrainedModel load_trained_model(const fs::path& run_dir, c10::Device device) {
   const fs::path config_file = run_dir / kConfigFile;
   if (!fs::exists(config_file))
     throw Error(run_dir.string() + ": not a training run (no config.json)");
@@ -266,6 +266,7 @@ TrainedModel load_trained_model(const fs::path& run_dir) {
   load_checkpoint(run_dir / kCheckpointFile, module, nullptr, &state,
                   trained.config.ema_decay > 0 ? &module : nullptr);
   trained.step = state.step;
+  trained.model->to(device);
   trained.model->eval();
   return trained;
 }

@@ -3,6 +3,8 @@
 // folder (METHOD.md §5), in a run folder that holds config.json, checkpoint.pt and log.jsonl.
 // Interrupted runs (even kill -9) resume from the last checkpoint and continue bit for bit.
 
+#include <c10/core/Device.h>
+
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -37,8 +39,10 @@ struct TrainedModel {
   std::int64_t step = 0;
 };
 
-// The run folder's configuration and latest checkpoint (its weight average when ema_decay > 0).
-// Throws Error if either is missing, or the checkpoint does not fit the configuration.
-TrainedModel load_trained_model(const std::filesystem::path& run_dir);
+// The run folder's configuration and latest checkpoint (its weight average when ema_decay > 0),
+// the model moved to `device`. Throws Error if either is missing, or the checkpoint does not fit
+// the configuration.
+TrainedModel load_trained_model(const std::filesystem::path& run_dir,
+                                c10::Device device = c10::Device(c10::kCPU));
 
 }  // namespace graspecmf::train
