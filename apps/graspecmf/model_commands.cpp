@@ -45,10 +45,12 @@ constexpr int kDefaultThreads = 1;
 struct TrainArgs {
   std::string config, data, out;
   int threads = kDefaultThreads;
+  std::string device = "cpu";
 };
 
 void run_train(const TrainArgs& a) {
   const train::TrainConfig config = train::read_train_config(a.config);
+  const c10::Device device = train::parse_device(a.device);
   std::unique_ptr<ProgressLine> progress;
   train::TrainCallbacks callbacks;
   callbacks.step = [&](std::int64_t step, std::int64_t total) {
@@ -63,7 +65,8 @@ void run_train(const TrainArgs& a) {
                                record["val_emd"].get<double>());
     }
   };
-  const train::TrainResult result = train::train(config, a.data, a.out, a.threads, callbacks);
+  const train::TrainResult result =
+      train::train(config, a.data, a.out, a.threads, callbacks, device);
   if (progress) progress->finish();
   std::cout << fmt::format(
       "{} steps done{} in {}; run folder {}\n", result.steps,
@@ -96,8 +99,7 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
 
 void add_device_option(CLI::App* cmd, std::string& device) {
   cmd->add_option("--device", device,
-                  "cpu (default), or cuda / cuda:N with a CUDA build of LibTorch; results match "
-                  "the CPU's to rounding");
+                  "cpu (default), or cuda / cuda:N with a CUDA build of LibTorch");
 }
 
 // --reject-collisions and --reject-shallow, checking `whose` grasps against `points`.
@@ -463,6 +465,7 @@ void add_model_commands(CLI::App& app) {
   train_cmd->add_option("--out", t->out, "Run folder (resumed if it holds this config)")
       ->required();
   train_cmd->add_option("--threads", t->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  add_device_option(train_cmd, t->device);
   train_cmd->callback([t] { run_train(*t); });
 
   auto s = std::make_shared<SampleArgs>();

@@ -170,6 +170,10 @@ TEST(CliModel, BadInput) {
                                 (dir / "missing").string() + " --out " + run_dir,
                             dir),
                         "no such dataset folder");
+  expect_one_error_line(run("train --config " + (dir / "tiny.json").string() + " --data " +
+                                data.string() + " --out " + run_dir + " --device gpu",
+                            dir),
+                        "unknown device 'gpu'");
   ASSERT_EQ(run("train --config " + (dir / "tiny.json").string() + " --data " + data.string() +
                     " --out " + run_dir,
                 dir)

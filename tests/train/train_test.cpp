@@ -182,6 +182,19 @@ TEST(Sampling, GpuGraspsMatchTheCpusForOneSeed) {
   }
 }
 
+TEST(Training, OnAGpuTheRunLoadsOnTheCpu) {
+  if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA GPU visible to LibTorch";
+  ScratchDir dir;
+  const TrainConfig config = tiny_config();
+  const TrainResult result = train(config, tiny_dataset(dir), dir / "run", 1, {}, torch::kCUDA);
+  EXPECT_EQ(result.steps, config.steps);
+  const TrainedModel trained = load_trained_model(dir / "run");
+  for (const auto& p : trained.model->parameters()) {
+    EXPECT_TRUE(p.is_cpu());
+    EXPECT_TRUE(torch::isfinite(p).all().item<bool>());
+  }
+}
+
 TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();

@@ -71,8 +71,9 @@ void load_checkpoint(const fs::path& path, torch::nn::Module& model,
                      torch::nn::Module* average) {
   if (!fs::exists(path)) throw Error(path.string() + ": no such checkpoint");
   try {
+    // Tensors land on the model's device, whichever device saved them.
     torch::serialize::InputArchive archive;
-    archive.load_from(path.string());
+    archive.load_from(path.string(), model.parameters().front().device());
     at::Tensor count;
     archive.read("tensor_count", count);
     read_module(archive, "model", model, count, path);
@@ -87,7 +88,9 @@ void load_checkpoint(const fs::path& path, torch::nn::Module& model,
       archive.read("step", step);
       archive.read("sampler_state", sampler);
       archive.read("generator", state->generator);
+      state->generator = state->generator.cpu();  // the CPU generator's state
       state->step = step.item<int64_t>();
+      sampler = sampler.cpu();
       const auto* bytes = sampler.data_ptr<uint8_t>();
       state->sampler_state.assign(bytes, bytes + sampler.numel());
     }

@@ -22,9 +22,9 @@ struct TrainingState {
 void save_checkpoint(const std::filesystem::path& path, const torch::nn::Module& model,
                      const torch::optim::Optimizer& optimizer, const TrainingState& state,
                      const torch::nn::Module* average = nullptr);
-// Loads parameters into model (and, when given, the optimizer state, the training state and the
-// weight average). Throws Error if the file is missing, unreadable, made for a different
-// configuration, or lacks a requested weight average.
+// Loads parameters onto model's device into model (and, when given, the optimizer state, the
+// training state and the weight average). Throws Error if the file is missing, unreadable, made for
+// a different configuration, or lacks a requested weight average.
 void load_checkpoint(const std::filesystem::path& path, torch::nn::Module& model,
                      torch::optim::Optimizer* optimizer = nullptr, TrainingState* state = nullptr,
                      torch::nn::Module* average = nullptr);

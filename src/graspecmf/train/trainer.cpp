@@ -67,7 +67,7 @@ struct StepTensors {
   flow::PoseBatch grasps;
 };
 
-StepTensors to_tensors(const std::vector<data::ObjectSample>& samples) {
+StepTensors to_tensors(const std::vector<data::ObjectSample>& samples, c10::Device device) {
   const auto copy = [](const std::vector<float>& values, std::vector<int64_t> shape) {
     return torch::from_blob(const_cast<float*>(values.data()), shape, torch::kFloat).clone();
   };
@@ -81,18 +81,23 @@ StepTensors to_tensors(const std::vector<data::ObjectSample>& samples) {
     positions.push_back(copy(s.positions, {g, 3}));
     index.push_back(torch::full({g}, static_cast<int64_t>(o), torch::kLong));
   }
-  return {torch::stack(points), torch::cat(index), {torch::cat(rotations), torch::cat(positions)}};
+  return {torch::stack(points).to(device),
+          torch::cat(index).to(device),
+          {torch::cat(rotations).to(device), torch::cat(positions).to(device)}};
 }
 
 // The flow-matching loss of one batch (METHOD.md §5), differentiable in the model's parameters.
+// The noise comes from the CPU generator, so a seed draws the same noise on every device.
 at::Tensor batch_loss(const nn::GraspFlowModel& model, const StepTensors& batch,
                       const TrainConfig& config, at::Generator& generator) {
   const int64_t g = batch.grasps.R.size(0);
+  const c10::Device device = batch.points.device();
   const nn::ObjectCondition condition = model->condition(batch.points);
   const flow::PoseBatch x0 = flow::sample_prior(g, config.prior_position_std, generator);
-  const at::Tensor t = at::rand({g}, generator, torch::kFloat);
-  const flow::PathPoint path = flow::geodesic_path(x0, batch.grasps, t);
-  const at::Tensor keep = flow::cfg_keep_mask(g, config.cfg_drop, generator);
+  const at::Tensor t = at::rand({g}, generator, torch::kFloat).to(device);
+  const flow::PathPoint path =
+      flow::geodesic_path({x0.R.to(device), x0.p.to(device)}, batch.grasps, t);
+  const at::Tensor keep = flow::cfg_keep_mask(g, config.cfg_drop, generator).to(device);
   const nn::Velocity velocity =
       model->forward(condition, batch.object_index, path.x_t.R, path.x_t.p, t, keep);
   return flow::flow_matching_loss(velocity.omega, velocity.v, path.omega, path.v);
@@ -110,8 +115,8 @@ json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspOb
     options.objects_per_step = objects.size();
     data::TrainingSampler sampler(objects, options, kValidationSeed);
     at::Generator generator = flow::make_generator(kValidationSeed);
-    record["val_loss"] =
-        batch_loss(model, to_tensors(sampler.next_step()), config, generator).item<double>();
+    const StepTensors batch = to_tensors(sampler.next_step(), model->parameters().front().device());
+    record["val_loss"] = batch_loss(model, batch, config, generator).item<double>();
   }
   double total = 0;
   for (const data::GraspObject& object : objects) {
@@ -168,7 +173,7 @@ void prepare_run(const fs::path& run_dir, const TrainConfig& config) {
 }  // namespace
 
 TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs::path& run_dir,
-                  int threads, const TrainCallbacks& callbacks) {
+                  int threads, const TrainCallbacks& callbacks, c10::Device device) {
   validate(config);
   if (threads < 1) throw Error("train: threads must be ≥ 1");
   at::set_num_threads(threads);
@@ -177,9 +182,11 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   const data::DatasetSplit split = dataset_split(dataset, data_dir, config.seed);
   torch::manual_seed(config.seed);
   nn::GraspFlowModel model(config.model);
+  model->to(device);
   nn::GraspFlowModel average{nullptr};  // the weight average, when ema_decay > 0
   if (config.ema_decay > 0) {
     average = nn::GraspFlowModel(config.model);
+    average->to(device);
     blend_weights(average, model, 0.0);
   }
   torch::optim::Adam optimizer(
@@ -214,7 +221,8 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   double interval_loss = 0;
   std::int64_t interval_steps = 0;
   for (std::int64_t step = result.resumed_from + 1; step <= config.steps; ++step) {
-    const at::Tensor loss = batch_loss(model, to_tensors(sampler.next_step()), config, generator);
+    const at::Tensor loss =
+        batch_loss(model, to_tensors(sampler.next_step(), device), config, generator);
     optimizer.zero_grad();
     loss.backward();
     set_learning_rate(optimizer, learning_rate_at(config, step));
@@ -233,7 +241,8 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
           {"learning_rate", learning_rate_at(config, step)},
           {"seconds_per_step",
            std::chrono::duration<double>(now - interval_start).count() / interval_steps},
-          {"threads", threads}};
+          {"threads", threads},
+          {"device", device.str()}};
       append_line(run_dir / kLogFile, record);
       if (callbacks.record) callbacks.record(record);
       interval_start = now;

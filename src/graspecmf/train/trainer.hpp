@@ -26,12 +26,14 @@ struct TrainResult {
 };
 
 // Trains on the dataset's train split (splits.json beside grasps/, else a seeded 80/10/10 split),
-// validating on its val split. `threads` sets LibTorch's intra-op threads; results are
-// reproducible for a given thread count. Throws Error for a missing or unusable dataset, a run
-// folder made with another configuration, or an unwritable run folder.
+// validating on its val split. `threads` sets LibTorch's intra-op threads; on the CPU results
+// are reproducible for a given thread count. The model trains on `device`; the data sampler and
+// the noise stay on the CPU, so they are the same on every device. Throws Error for a missing or
+// unusable dataset, a run folder made with another configuration, or an unwritable run folder.
 TrainResult train(const TrainConfig& config, const std::filesystem::path& data_dir,
                   const std::filesystem::path& run_dir, int threads,
-                  const TrainCallbacks& callbacks = {});
+                  const TrainCallbacks& callbacks = {},
+                  c10::Device device = c10::Device(c10::kCPU));
 
 struct TrainedModel {
   TrainConfig config;
