@@ -81,11 +81,13 @@ struct SamplingOverrides {
   std::string solver;
   int steps = 0;                                               // 0: the run's
   double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's
+  int clouds = 0;                                              // 0: the run's
 
   train::SamplingSettings apply(train::SamplingSettings settings) const {
     if (!solver.empty()) settings.solver = solver;
     if (steps > 0) settings.steps = steps;
     if (!std::isnan(guidance)) settings.guidance = guidance;
+    if (clouds > 0) settings.clouds = clouds;
     return settings;
   }
 };
@@ -95,6 +97,10 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
   cmd->add_option("--steps", o.steps, "ODE steps")->check(CLI::Range(1, 100000));
   cmd->add_option("--guidance", o.guidance,
                   "Classifier-free guidance weight (0 = unconditional; default: the run's)");
+  cmd->add_option("--clouds", o.clouds,
+                  "Encode this many point clouds of the object and average their z (default: "
+                  "the run's, 1 as in the paper)")
+      ->check(CLI::Range(1, 64));
 }
 
 void add_device_option(CLI::App* cmd, std::string& device) {
@@ -183,11 +189,14 @@ void run_sample(const SampleArgs& a) {
   const train::TrainedModel trained =
       train::load_trained_model(a.model, train::parse_device(a.device));
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
+  const auto clouds = static_cast<std::size_t>(settings.clouds);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
-  const SampleInput input = sample_input(a, points);
-  if (input.cloud.size() < static_cast<std::size_t>(trained.config.model.encoder.k)) {
-    throw Error(fmt::format("sample: the cloud has {} points; the model needs at least {}",
-                            input.cloud.size(), trained.config.model.encoder.k));
+  const SampleInput input = sample_input(a, clouds * points);
+  const auto k = static_cast<std::size_t>(trained.config.model.encoder.k);
+  if (input.cloud.size() < clouds * k) {
+    throw Error(fmt::format("sample: the cloud has {} points; the model needs at least {}{}",
+                            input.cloud.size(), clouds * k,
+                            clouds > 1 ? fmt::format(" ({} per cloud)", k) : ""));
   }
   std::optional<gripper::CloudGraspFilter> filter;
   if (a.checks.any()) filter.emplace(input.filter_points, a.checks);

@@ -90,6 +90,8 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"ema_decay", 1.0}}), Error);
   EXPECT_THROW(train_config_from_json({{"ema_decay", -0.1}}), Error);
   EXPECT_THROW(train_config_from_json({{"sampling", {{"solver", "rk45"}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"sampling", {{"clouds", 0}}}}), Error);
+  EXPECT_EQ(train_config_from_json({{"sampling", {{"clouds", 4}}}}).sampling.clouds, 4);
   EXPECT_THROW(train_config_from_json({{"data", {{"augmentation", "xyz"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", 0.5}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", -0.1}}}}), Error);
@@ -151,6 +153,36 @@ TEST(Sampling, GraspsFollowTheCloudsPosition) {
   EXPECT_THROW(sample_grasps(model, {}, config, 5, config.sampling, 9), Error);
   cloud[3].x() = std::nan("");
   EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9), Error);
+}
+
+TEST(Sampling, AveragingTheZOfSeveralClouds) {
+  torch::manual_seed(1);
+  TrainConfig config = tiny_config();
+  const nn::GraspFlowModel model(config.model);
+  const std::vector<Eigen::Vector3d> cloud = normal_cloud(1.0);
+  // Two copies of a cloud average to its own z: the grasps of the single cloud.
+  std::vector<Eigen::Vector3d> twice = cloud;
+  twice.insert(twice.end(), cloud.begin(), cloud.end());
+  SamplingSettings two = config.sampling;
+  two.clouds = 2;
+  const auto once = sample_grasps(model, cloud, config, 6, config.sampling, 9);
+  const auto doubled = sample_grasps(model, twice, config, 6, two, 9);
+  for (std::size_t i = 0; i < once.size(); ++i) {
+    EXPECT_LT((doubled[i].p - once[i].p).norm(), 1e-5) << i;
+    EXPECT_LT((doubled[i].R - once[i].R).norm(), 1e-5) << i;
+  }
+  // Two different halves: the grasps follow the cloud when it moves (each half is centred).
+  std::vector<Eigen::Vector3d> shifted = cloud;
+  for (Eigen::Vector3d& q : shifted) q += Eigen::Vector3d(0.3, -0.2, 1.0);
+  const auto halves = sample_grasps(model, cloud, config, 6, two, 9);
+  const auto moved = sample_grasps(model, shifted, config, 6, two, 9);
+  for (std::size_t i = 0; i < halves.size(); ++i) {
+    EXPECT_LT((moved[i].p - halves[i].p - Eigen::Vector3d(0.3, -0.2, 1.0)).norm(), 1e-5) << i;
+    EXPECT_LT((moved[i].R - halves[i].R).norm(), 1e-5) << i;
+    EXPECT_GT((halves[i].p - once[i].p).norm(), 1e-4) << i;  // the halves' z differs from z
+  }
+  two.clouds = 41;  // more clouds than points
+  EXPECT_THROW(sample_grasps(model, cloud, config, 6, two, 9), Error);
 }
 
 TEST(Device, NamesParseAndCudaNeedsAGpu) {

@@ -61,8 +61,11 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
   result.name = object.name;
   const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
   result.n = reference.size();
-  const geometry::SurfacePoints cloud = geometry::sample_surface(
-      object.mesh, static_cast<std::size_t>(config.model.encoder.points), seed + 1);
+  const geometry::SurfacePoints cloud =
+      geometry::sample_surface(object.mesh,
+                               static_cast<std::size_t>(settings.clouds) *
+                                   static_cast<std::size_t>(config.model.encoder.points),
+                               seed + 1);
   for (std::size_t r = 0; r < rotations.size(); ++r) {
     const Eigen::Matrix3d& g = rotations[r];
     const std::vector<Eigen::Vector3d> rotated_cloud = rotated(cloud.points, g);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <string>
 
 #include "graspecmf/core/error.hpp"
@@ -60,24 +61,40 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
                                      const gripper::CloudGraspFilter* filter) {
   if (cloud.empty()) throw Error("sampling needs a non-empty point cloud");
   if (n == 0) throw Error("sampling needs at least one grasp");
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+  if (settings.clouds < 1) throw Error("sampling needs at least one cloud");
   for (const Eigen::Vector3d& q : cloud) {
     if (!q.allFinite()) throw Error("the point cloud has a non-finite coordinate");
-    centroid += q;
   }
-  centroid /= static_cast<double>(cloud.size());
+  const auto parts = static_cast<std::size_t>(settings.clouds);
+  const std::size_t size = cloud.size() / parts;
+  if (size == 0) throw Error("the point cloud has fewer points than clouds to encode");
   const double scale = config.data.position_scale;
-  at::Tensor points = torch::empty({static_cast<int64_t>(cloud.size()), 3}, torch::kFloat);
-  auto access = points.accessor<float, 2>();
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    for (int k = 0; k < 3; ++k) {
-      access[static_cast<int64_t>(i)][k] = static_cast<float>(scale * (cloud[i][k] - centroid[k]));
+  // Part c, centred on its own centroid as in training, is row c of points [clouds, size, 3].
+  at::Tensor points =
+      torch::empty({static_cast<int64_t>(parts), static_cast<int64_t>(size), 3}, torch::kFloat);
+  auto access = points.accessor<float, 3>();
+  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // the mean of the parts' centroids
+  for (std::size_t c = 0; c < parts; ++c) {
+    const auto first = cloud.begin() + static_cast<std::ptrdiff_t>(c * size);
+    const Eigen::Vector3d part_centroid =
+        std::accumulate(first, first + static_cast<std::ptrdiff_t>(size),
+                        Eigen::Vector3d::Zero().eval()) /
+        static_cast<double>(size);
+    centroid += part_centroid / static_cast<double>(parts);
+    for (std::size_t i = 0; i < size; ++i) {
+      for (int k = 0; k < 3; ++k) {
+        access[static_cast<int64_t>(c)][static_cast<int64_t>(i)][k] = static_cast<float>(
+            scale * (first[static_cast<std::ptrdiff_t>(i)][k] - part_centroid[k]));
+      }
     }
   }
   torch::NoGradGuard no_grad;
   // The prior is drawn on the CPU, so a seed gives the same grasps on every device.
   const c10::Device device = model->parameters().front().device();
-  const nn::ObjectCondition condition = model->condition(points.unsqueeze(0).to(device));
+  const nn::ObjectCondition condition =
+      parts == 1
+          ? model->condition(points.to(device))
+          : model->field->condition(model->encoder->forward(points.to(device)).mean(0, true));
   std::vector<lie::Pose> grasps;
   std::size_t drawn = 0;
   for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {

@@ -77,6 +77,7 @@ void validate(const TrainConfig& c) {
   flow::parse_solver(c.sampling.solver);
   if (c.sampling.steps < 1) throw Error("train config: sampling steps must be ≥ 1");
   if (!std::isfinite(c.sampling.guidance)) throw Error("train config: guidance must be finite");
+  if (c.sampling.clouds < 1) throw Error("train config: sampling clouds must be ≥ 1");
 }
 
 json to_json(const TrainConfig& c) {
@@ -114,7 +115,8 @@ json to_json(const TrainConfig& c) {
           {"sampling",
            {{"solver", c.sampling.solver},
             {"steps", c.sampling.steps},
-            {"guidance", c.sampling.guidance}}}};
+            {"guidance", c.sampling.guidance},
+            {"clouds", c.sampling.clouds}}}};
 }
 
 TrainConfig train_config_from_json(const json& j) {
@@ -171,10 +173,11 @@ TrainConfig train_config_from_json(const json& j) {
   read(j, "validation_objects", c.validation_objects, "");
   if (j.contains("sampling")) {
     const json& s = j["sampling"];
-    only(s, {"solver", "steps", "guidance"}, "sampling.");
+    only(s, {"solver", "steps", "guidance", "clouds"}, "sampling.");
     read(s, "solver", c.sampling.solver, "sampling.");
     read(s, "steps", c.sampling.steps, "sampling.");
     read(s, "guidance", c.sampling.guidance, "sampling.");
+    read(s, "clouds", c.sampling.clouds, "sampling.");
   }
   c.model.field.z_channels = c.model.encoder.out_channels;
   c.data.points = static_cast<std::size_t>(c.model.encoder.points);

@@ -17,6 +17,7 @@ struct SamplingSettings {
   std::string solver = "rkmk4";  // euler, heun or rkmk4
   int steps = 20;
   double guidance = 2.0;  // classifier-free guidance weight w
+  int clouds = 1;         // clouds of the object encoded and their z averaged (1 in the paper)
 };
 
 struct TrainConfig {
