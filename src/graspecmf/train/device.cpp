@@ -7,10 +7,9 @@
 namespace graspecmf::train {
 
 c10::Device parse_device(const std::string& name) {
+  const Error unknown("unknown device '" + name + "' (expected cpu, cuda or cuda:N)");
   const bool cuda = name == "cuda" || name.rfind("cuda:", 0) == 0;
-  if (name != "cpu" && !cuda) {
-    throw Error("unknown device '" + name + "' (expected cpu, cuda or cuda:N)");
-  }
+  if (name != "cpu" && !cuda) throw unknown;
   if (!cuda) return c10::Device(c10::kCPU);
   if (!torch::cuda::is_available()) {
     throw Error("device '" + name +
@@ -25,7 +24,7 @@ c10::Device parse_device(const std::string& name) {
     }
     return device;
   } catch (const c10::Error&) {
-    throw Error("unknown device '" + name + "' (expected cpu, cuda or cuda:N)");
+    throw unknown;
   }
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// The compute device of inference commands (`--device`): the CPU, or a CUDA GPU where this
-// LibTorch build and the machine have one.
+// The compute device of train, sample and evaluate (`--device`): the CPU, or a CUDA GPU where
+// this LibTorch build and the machine have one.
 
 #include <c10/core/Device.h>
 
