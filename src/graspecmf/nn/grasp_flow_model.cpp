@@ -28,4 +28,8 @@ Velocity GraspFlowModelImpl::forward(const ObjectCondition& condition,
   return field->forward(condition, object_index, rotation, position, time, keep);
 }
 
+c10::Device GraspFlowModelImpl::device() const {
+  return encoder->parameters().front().device();
+}
+
 }  // namespace graspecmf::nn

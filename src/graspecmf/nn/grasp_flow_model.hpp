@@ -32,6 +32,9 @@ class GraspFlowModelImpl : public torch::nn::Module {
 
   const GraspFlowModelOptions& options() const { return options_; }
 
+  // The device the parameters live on (all of them move together with to()).
+  c10::Device device() const;
+
   Encoder encoder{nullptr};
   VectorField field{nullptr};
 

@@ -90,7 +90,7 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   }
   torch::NoGradGuard no_grad;
   // The prior is drawn on the CPU, so a seed gives the same grasps on every device.
-  const c10::Device device = model->parameters().front().device();
+  const c10::Device device = model->device();
   const nn::ObjectCondition condition =
       parts == 1
           ? model->condition(points.to(device))

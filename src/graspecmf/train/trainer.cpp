@@ -115,7 +115,7 @@ json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspOb
     options.objects_per_step = objects.size();
     data::TrainingSampler sampler(objects, options, kValidationSeed);
     at::Generator generator = flow::make_generator(kValidationSeed);
-    const StepTensors batch = to_tensors(sampler.next_step(), model->parameters().front().device());
+    const StepTensors batch = to_tensors(sampler.next_step(), model->device());
     record["val_loss"] = batch_loss(model, batch, config, generator).item<double>();
   }
   double total = 0;
