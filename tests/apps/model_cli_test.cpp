@@ -128,6 +128,14 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_EQ(comparison["ci_95"][1], comparison["mean_difference"]);
   EXPECT_EQ(comparison["sign_test_p"], 1.0);
   EXPECT_NE(evaluated.out.find("sign test p = 1"), std::string::npos) << evaluated.out;
+  // The one object has a floor, so the perfect-sampler comparison covers it.
+  const nlohmann::json& floored = report["floor_comparison"];
+  EXPECT_EQ(floored["objects"], 1);
+  EXPECT_EQ(floored["model_below_nearest"], report["objects_below_nearest"]);
+  EXPECT_EQ(floored["floor_below_nearest"].get<int>(),
+            object["floor_emd"].get<double>() < object["nearest_emd"].get<double>() ? 1 : 0);
+  EXPECT_DOUBLE_EQ(floored["median_model_excess"].get<double>(),
+                   object["mean_emd"].get<double>() - object["floor_emd"].get<double>());
   // --success 2 simulates 2 generated grasps per rotation and 2 of the nearest object's.
   EXPECT_EQ(object["success"]["trials"], 6);
   EXPECT_EQ(object["nearest_success"]["trials"], 2);

@@ -82,5 +82,25 @@ TEST(PairedComparison, RejectsBadInput) {
   EXPECT_THROW(compare_paired({0.1}, {0.2}, 1, 0), Error);
 }
 
+TEST(FloorComparison, CountsWinsOfTheModelAndOfThePerfectSampler) {
+  // Object 0: both below the baseline; 1: only the floor; 2: neither (the baseline sits below the
+  // floor, as retrieval of a near-duplicate can); 3: only the floor, and a tie for the model.
+  const FloorComparison c = compare_with_floor({0.30, 0.50, 0.40, 0.35}, {0.40, 0.45, 0.22, 0.35},
+                                               {0.25, 0.20, 0.24, 0.30});
+  EXPECT_EQ(c.objects, 4u);
+  EXPECT_EQ(c.model_wins, 1u);
+  EXPECT_EQ(c.floor_wins, 3u);
+  // Excesses 0.05, 0.30, 0.16, 0.05: the median of an even count is the mean of the middle two.
+  EXPECT_NEAR(c.median_excess, 0.105, 1e-12);
+  EXPECT_NEAR(compare_with_floor({0.3, 0.6, 0.2}, {1, 1, 1}, {0.1, 0.1, 0.1}).median_excess, 0.2,
+              1e-12);
+}
+
+TEST(FloorComparison, RejectsBadInput) {
+  EXPECT_THROW(compare_with_floor({0.1}, {0.1}, {0.1, 0.2}), Error);
+  EXPECT_THROW(compare_with_floor({}, {}, {}), Error);
+  EXPECT_THROW(compare_with_floor({0.1}, {0.2}, {std::numeric_limits<double>::infinity()}), Error);
+}
+
 }  // namespace
 }  // namespace graspecmf::metrics

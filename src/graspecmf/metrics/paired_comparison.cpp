@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numeric>
+#include <string>
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
@@ -29,17 +31,26 @@ double quantile(const std::vector<double>& sorted, double q) {
   return sorted[static_cast<std::size_t>(std::lround(q * last))];
 }
 
+// Throws Error, naming `caller`, unless the lists are equally long, non-empty and finite.
+void check_scores(const char* caller, std::initializer_list<const std::vector<double>*> lists) {
+  const std::string name(caller);
+  for (const std::vector<double>* list : lists) {
+    if (list->size() != (*lists.begin())->size()) {
+      throw Error(name + ": the score lists differ in length");
+    }
+    if (list->empty()) throw Error(name + ": no objects to compare");
+    if (!std::all_of(list->begin(), list->end(), [](double x) { return std::isfinite(x); })) {
+      throw Error(name + ": a score is NaN or infinite");
+    }
+  }
+}
+
 }  // namespace
 
 PairedComparison compare_paired(const std::vector<double>& a, const std::vector<double>& b,
                                 std::uint64_t seed, std::size_t resamples) {
-  if (a.size() != b.size()) throw Error("compare_paired: the score lists differ in length");
-  if (a.empty()) throw Error("compare_paired: no objects to compare");
+  check_scores("compare_paired", {&a, &b});
   if (resamples == 0) throw Error("compare_paired: resamples must be positive");
-  const auto finite = [](double x) { return std::isfinite(x); };
-  if (!std::all_of(a.begin(), a.end(), finite) || !std::all_of(b.begin(), b.end(), finite)) {
-    throw Error("compare_paired: a score is NaN or infinite");
-  }
   PairedComparison c;
   c.objects = a.size();
   std::vector<double> difference(a.size());
@@ -66,6 +77,25 @@ PairedComparison compare_paired(const std::vector<double>& a, const std::vector<
   std::sort(means.begin(), means.end());
   c.ci_low = quantile(means, 0.025);
   c.ci_high = quantile(means, 0.975);
+  return c;
+}
+
+FloorComparison compare_with_floor(const std::vector<double>& model,
+                                   const std::vector<double>& baseline,
+                                   const std::vector<double>& floor) {
+  check_scores("compare_with_floor", {&model, &baseline, &floor});
+  FloorComparison c;
+  c.objects = model.size();
+  std::vector<double> excess(model.size());
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    c.model_wins += model[i] < baseline[i];
+    c.floor_wins += floor[i] < baseline[i];
+    excess[i] = model[i] - floor[i];
+  }
+  std::sort(excess.begin(), excess.end());
+  const std::size_t middle = excess.size() / 2;
+  c.median_excess =
+      excess.size() % 2 ? excess[middle] : 0.5 * (excess[middle - 1] + excess[middle]);
   return c;
 }
 

@@ -25,4 +25,20 @@ struct PairedComparison {
 PairedComparison compare_paired(const std::vector<double>& a, const std::vector<double>& b,
                                 std::uint64_t seed, std::size_t resamples = 10000);
 
+// How many per-object wins are possible at all: on objects with a sampling floor (the EMD between
+// two disjoint draws of the object's own grasps), a perfect sampler scores about the floor, so
+// its wins against the baseline bound what the model can reach.
+struct FloorComparison {
+  std::size_t objects = 0;
+  std::size_t model_wins = 0;  // objects where model < baseline
+  std::size_t floor_wins = 0;  // objects where floor < baseline
+  double median_excess = 0.0;  // median over the objects of model − floor
+};
+
+// Compares model[i], baseline[i] and floor[i] of the same objects. Throws Error if the lists
+// differ in length, are empty or hold a non-finite score.
+FloorComparison compare_with_floor(const std::vector<double>& model,
+                                   const std::vector<double>& baseline,
+                                   const std::vector<double>& floor);
+
 }  // namespace graspecmf::metrics
