@@ -329,10 +329,10 @@ void run_evaluate(const EvaluateArgs& a) {
   const sim::TrialConfig trial_config = sim::read_trial_config(a.sim_config);
   ProgressLine progress("evaluating", objects.size());
   json per_object = json::array();
-  double total = 0, total_random = 0, total_floor = 0;
-  std::size_t floors = 0;  // objects with a sampling floor (≥ 2n successful grasps)
+  double total = 0, total_random = 0;
   std::vector<double> model_emds, nearest_emds;
-  std::vector<double> floored_model, floored_nearest, floor_emds;  // objects with a floor
+  // Objects with a sampling floor (≥ 2n successful grasps): model, nearest and floor EMDs.
+  std::vector<double> floored_model, floored_nearest, floor_emds;
   sim::GraspOutcomes model_success, nearest_success;
   std::vector<double> model_failure_rates, nearest_failure_rates;  // lower is better, as EMDs
   std::string table =
@@ -370,8 +370,6 @@ void run_evaluate(const EvaluateArgs& a) {
       model_emds.push_back(e.mean_emd);
       nearest_emds.push_back(b.nearest_emd);
       if (b.floor_emd) {
-        total_floor += *b.floor_emd;
-        ++floors;
         floored_model.push_back(e.mean_emd);
         floored_nearest.push_back(b.nearest_emd);
         floor_emds.push_back(*b.floor_emd);
@@ -431,11 +429,12 @@ void run_evaluate(const EvaluateArgs& a) {
         "bootstrap interval [{:+.4f}, {:+.4f}])",
         total_random / count, mean_nearest, c.wins, objects.size(), c.sign_test_p,
         c.mean_difference, c.ci_low, c.ci_high);
-    if (floors == objects.size()) {
-      report["mean_floor_emd"] = total_floor / count;
-      summary += fmt::format("; sampling floor {:.4f}", total_floor / count);
+    if (floor_emds.size() == objects.size()) {
+      const double mean_floor = std::accumulate(floor_emds.begin(), floor_emds.end(), 0.0) / count;
+      report["mean_floor_emd"] = mean_floor;
+      summary += fmt::format("; sampling floor {:.4f}", mean_floor);
     }
-    if (floors > 0) {
+    if (!floor_emds.empty()) {
       const metrics::FloorComparison f =
           metrics::compare_with_floor(floored_model, floored_nearest, floor_emds);
       report["floor_comparison"] = {{"objects", f.objects},
