@@ -183,6 +183,21 @@ TEST_F(VectorFieldTest, RejectsBadInput) {
                Error);
 }
 
+TEST_F(VectorFieldTest, AveragedConditionIsTheMeanOfTheCloudsEncodings) {
+  torch::NoGradGuard no_grad;
+  GraspFlowModel model(small_model());
+  const torch::Tensor clouds = torch::randn({2, 64, 3});
+  // One cloud: exactly condition()'s terms.
+  EXPECT_TRUE(torch::equal(model->averaged_condition(clouds.slice(0, 0, 1)).z_terms,
+                           model->condition(clouds.slice(0, 0, 1)).z_terms));
+  // Two clouds: the field's terms of the mean encoding (one object), unlike either cloud's.
+  const torch::Tensor mean_z = model->encoder->forward(clouds).mean(0, true);
+  const torch::Tensor averaged = model->averaged_condition(clouds).z_terms;
+  EXPECT_EQ(averaged.size(0), 1);
+  EXPECT_TRUE(torch::allclose(averaged, model->field->condition(mean_z).z_terms));
+  EXPECT_FALSE(torch::allclose(averaged, model->condition(clouds.slice(0, 0, 1)).z_terms));
+}
+
 TEST_F(VectorFieldTest, ModelGradientsReachEveryParameter) {
   GraspFlowModel model(small_model());
   const auto condition = model->condition(torch::randn({2, 64, 3}));

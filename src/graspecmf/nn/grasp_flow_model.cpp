@@ -21,6 +21,10 @@ ObjectCondition GraspFlowModelImpl::condition(const torch::Tensor& points) const
   return field->condition(encoder->forward(points));
 }
 
+ObjectCondition GraspFlowModelImpl::averaged_condition(const torch::Tensor& clouds) const {
+  return field->condition(encoder->forward(clouds).mean(0, /*keepdim=*/true));
+}
+
 Velocity GraspFlowModelImpl::forward(const ObjectCondition& condition,
                                      const torch::Tensor& object_index,
                                      const torch::Tensor& rotation, const torch::Tensor& position,

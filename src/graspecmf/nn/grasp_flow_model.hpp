@@ -25,6 +25,10 @@ class GraspFlowModelImpl : public torch::nn::Module {
   // VectorField::condition).
   ObjectCondition condition(const torch::Tensor& points) const;
 
+  // Clouds [M, N, 3] of one object (each centred, scaled) → that object's z terms, from the mean
+  // of the M encoder outputs; M = 1 gives condition()'s result exactly.
+  ObjectCondition averaged_condition(const torch::Tensor& clouds) const;
+
   // The field for G grasps of those objects; see VectorFieldImpl::forward.
   Velocity forward(const ObjectCondition& condition, const torch::Tensor& object_index,
                    const torch::Tensor& rotation, const torch::Tensor& position,

@@ -91,10 +91,7 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   torch::NoGradGuard no_grad;
   // The prior is drawn on the CPU, so a seed gives the same grasps on every device.
   const c10::Device device = model->device();
-  const nn::ObjectCondition condition =
-      parts == 1
-          ? model->condition(points.to(device))
-          : model->field->condition(model->encoder->forward(points.to(device)).mean(0, true));
+  const nn::ObjectCondition condition = model->averaged_condition(points.to(device));
   std::vector<lie::Pose> grasps;
   std::size_t drawn = 0;
   for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {
