@@ -179,5 +179,25 @@ TEST(AcronymFile, StandardInertiaFlipsOffDiagonals) {
   EXPECT_EQ(standard_inertia(stored), expected);
 }
 
+// Moving the record moves its grasps and centre of mass and turns its inertia (stored with
+// ACRONYM's sign), so that the object's inertia about a moved axis is unchanged.
+TEST(AcronymFile, MovedRigidlyMovesGraspsComAndInertia) {
+  const AcronymGraspFile record = read_acronym_file(sample_grasp_file());
+  lie::Pose motion;
+  motion.R = lie::so3_exp(Vec3(0.2, -0.4, 1.1));
+  motion.p = Vec3(2.7, 1.2, 0.0);
+  const AcronymGraspFile moved = moved_rigidly(record, motion);
+  ASSERT_EQ(moved.size(), record.size());
+  EXPECT_EQ(moved.qualities->object_in_gripper, record.qualities->object_in_gripper);
+  const Mat4 expected = motion.matrix() * record.transforms[7];
+  EXPECT_LT((moved.transforms[7] - expected).norm(), 1e-12);
+  EXPECT_LT((*moved.object.com - (motion.R * *record.object.com + motion.p)).norm(), 1e-12);
+  const Vec3 axis = Vec3(1, 2, 3).normalized();
+  const double before = axis.dot(standard_inertia(*record.object.inertia) * axis);
+  const Vec3 moved_axis = motion.R * axis;
+  const double after = moved_axis.dot(standard_inertia(*moved.object.inertia) * moved_axis);
+  EXPECT_NEAR(after, before, 1e-12 * before);
+  EXPECT_EQ(moved.object.mass, record.object.mass);
+}
 }  // namespace
 }  // namespace graspecmf::data

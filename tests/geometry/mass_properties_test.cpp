@@ -115,5 +115,24 @@ TEST(MassProperties, MugMatchesTheGraspFile) {
   }
 }
 
+// The principal frame moves rigidly with the mesh: for the sample mug moved by metres and turned,
+// it is the moved frame of the unmoved mug, to round-off.
+TEST(MassProperties, PrincipalFrameMovesWithTheMesh) {
+  const TriangleMesh mug = scaled(read_mesh(kMugPath), kMugScale);
+  const lie::Pose frame = principal_frame(mug);
+  EXPECT_NEAR((frame.R.transpose() * frame.R - Mat3::Identity()).norm(), 0.0, 1e-12);
+  EXPECT_NEAR(frame.R.determinant(), 1.0, 1e-12);
+  EXPECT_NEAR((frame.p - kFileCom).norm(), 0.0, 1e-8);
+  for (const auto& [axis, angle] : {std::pair{Vec3(0, 0, 1), 0.7}, {Vec3(1, 2, 3), 2.9}}) {
+    lie::Pose motion;
+    motion.R = Eigen::AngleAxisd(angle, axis.normalized()).toRotationMatrix();
+    motion.p = Vec3(2.7, 1.2, -0.5);
+    const lie::Pose moved = principal_frame(transformed(mug, motion));
+    const lie::Pose expected = lie::compose(motion, frame);
+    EXPECT_LT((moved.R - expected.R).norm(), 1e-9) << "angle " << angle;
+    EXPECT_LT((moved.p - expected.p).norm(), 1e-9) << "angle " << angle;
+  }
+}
+
 }  // namespace
 }  // namespace graspecmf::geometry

@@ -163,5 +163,28 @@ TEST(Se3Rigidity, DetectsEachKindOfDefect) {
   }
 }
 
+// Poses that differ by round-off quantise to the same bits; the result is a proper rigid transform
+// within a grid step of the input.
+TEST(Se3Pose, QuantizedMakesRoundOffDifferencesIdentical) {
+  Rng rng(9);
+  const double grid = 1.0 / (1 << 30);
+  int identical = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    Pose a;
+    a.R = random_rotation(rng);
+    a.p = Vec3(rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2), rng.uniform(-0.2, 0.2));
+    // The same pose, moved far away and back: different in the last bits.
+    Pose far;
+    far.R = so3_exp(Vec3(0.3, -1.1, 2.0));
+    far.p = Vec3(2.7, 1.2, -3.0);
+    const Pose b = compose(inverse(far), compose(far, a));
+    const Pose qa = quantized(a, grid), qb = quantized(b, grid);
+    identical += qa.R == qb.R && qa.p == qb.p;
+    EXPECT_LT((qa.R.transpose() * qa.R - Mat3::Identity()).norm(), 1e-14);
+    EXPECT_LT(so3_distance(qa.R, a.R), 4 * grid);
+    EXPECT_LT((qa.p - a.p).norm(), grid);
+  }
+  EXPECT_GE(identical, 199);
+}
 }  // namespace
 }  // namespace graspecmf::lie

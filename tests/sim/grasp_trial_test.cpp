@@ -27,7 +27,8 @@ TEST(GraspTrial, HoldsABoxGraspedAcrossItsMiddle) {
   const TrialResult r = sim.run(top_down_grasp(0.05));
   EXPECT_FALSE(r.unstable);
   EXPECT_TRUE(r.success);
-  EXPECT_NEAR(r.final_opening, 0.05, 0.002);
+  // The rubber pads are compliant: under the 70 N squeeze each sinks about 1 mm into the box.
+  EXPECT_NEAR(r.final_opening, 0.048, 0.001);
   EXPECT_LT(r.shaking_linear, 0.01);
   EXPECT_LT(r.closing_slip, 0.01);
   EXPECT_LT(r.shaking_slip, 0.01);

@@ -6,13 +6,10 @@
 
 #include <vector>
 
-#include "graspecmf/data/acronym_file.hpp"
-#include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/sim/batch.hpp"
 #include "graspecmf/sim/grasp_trial.hpp"
 #include "graspecmf/sim/label_agreement.hpp"
-#include "graspecmf/sim/scene_object.hpp"
-#include "test_support.hpp"
+#include "sample_mug.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -22,29 +19,8 @@ constexpr std::size_t kStride = 50;
 // room for grasps near a decision boundary to flip on another CPU or MuJoCo build.
 constexpr double kAgreementFloor = 0.85;
 
-struct MugSubset {
-  SceneObject object;
-  std::vector<lie::Pose> grasps;
-  std::vector<std::int64_t> labels;
-};
-
-const MugSubset& mug_subset() {
-  static const MugSubset subset = [] {
-    const data::AcronymGraspFile record =
-        data::read_acronym_file(graspecmf::testing::sample_grasp_file());
-    const geometry::TriangleMesh mesh = geometry::scaled(
-        geometry::read_mesh(graspecmf::testing::sample_root() / record.object.file),
-        record.object.scale);
-    static const graspecmf::testing::ScratchDir cache;
-    MugSubset s;
-    s.object = make_scene_object(mesh, record.object, TrialConfig{},
-                                 geometry::DecompositionOptions{}, cache.path());
-    for (std::size_t i = 0; i < record.size(); i += kStride) {
-      s.grasps.push_back(lie::Pose::from_matrix(record.transforms[i]));
-      s.labels.push_back(record.qualities->object_in_gripper[i]);
-    }
-    return s;
-  }();
+const testing::SampleMug& mug_subset() {
+  static const testing::SampleMug subset = testing::sample_mug(kStride);
   return subset;
 }
 
@@ -62,7 +38,7 @@ const std::vector<TrialResult>& two_thread_results() {
 }
 
 TEST(MugAgreement, FixedSubsetAgreesWithAcronymLabels) {
-  const MugSubset& s = mug_subset();
+  const testing::SampleMug& s = mug_subset();
   ASSERT_EQ(s.grasps.size(), 40u);
   const LabelAgreement a = compare_labels(two_thread_results(), s.labels);
   int unstable = 0;

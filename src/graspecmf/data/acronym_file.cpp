@@ -232,4 +232,17 @@ Mat3 standard_inertia(const Mat3& acronym_inertia) {
   return standard;
 }
 
+AcronymGraspFile moved_rigidly(const AcronymGraspFile& record, const lie::Pose& motion) {
+  AcronymGraspFile out = record;
+  for (Mat4& T : out.transforms) T = lie::compose(motion, lie::Pose::from_matrix(T)).matrix();
+  AcronymObjectInfo& object = out.object;
+  if (object.com) object.com = lie::apply(motion, *object.com);
+  // The stored sign convention flips with an involution, so rotate the standard tensor.
+  if (object.inertia) {
+    object.inertia =
+        standard_inertia(motion.R * standard_inertia(*object.inertia) * motion.R.transpose());
+  }
+  return out;
+}
+
 }  // namespace graspecmf::data

@@ -58,4 +58,8 @@ void write_acronym_file(const AcronymGraspFile& record, const std::filesystem::p
 // off-diagonal entries carry the opposite sign.
 Mat3 standard_inertia(const Mat3& acronym_inertia);
 
+// The record after its object and grasps move rigidly together by `motion` (applied to the scaled
+// mesh frame): transforms and centre of mass moved, inertia rotated; labels and the rest kept.
+AcronymGraspFile moved_rigidly(const AcronymGraspFile& record, const lie::Pose& motion);
+
 }  // namespace graspecmf::data

@@ -13,6 +13,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/fnv1a.hpp"
 
 namespace graspecmf::geometry {
 
@@ -30,22 +31,6 @@ constexpr char kMagic[8] = {'G', 'C', 'V', 'X', 'D', 'E', 'C', '1'};
 constexpr std::size_t kVertexBytes = 3 * sizeof(double);
 // Bump when the algorithm's output changes, so that old cache files are no longer found.
 constexpr std::uint64_t kAlgorithmVersion = 1;
-
-class Fnv1a {
- public:
-  void add(const void* data, std::size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) hash_ = (hash_ ^ bytes[i]) * 1099511628211ULL;
-  }
-  template <typename T>
-  void add_value(const T& value) {
-    add(&value, sizeof value);
-  }
-  std::uint64_t value() const { return hash_; }
-
- private:
-  std::uint64_t hash_ = 14695981039346656037ULL;
-};
 
 std::uint64_t cache_key(const TriangleMesh& mesh, const DecompositionOptions& options) {
   Fnv1a hash;

@@ -1,5 +1,6 @@
 #include "graspecmf/geometry/mass_properties.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "graspecmf/core/error.hpp"
@@ -43,6 +44,26 @@ MassProperties mass_properties(const TriangleMesh& mesh, double density) {
   out.center_of_mass = origin + com;
   out.inertia = density * (central.trace() * Mat3::Identity() - central);
   return out;
+}
+
+lie::Pose principal_frame(const TriangleMesh& mesh) {
+  const MassProperties mp = mass_properties(mesh);
+  // Inward-facing meshes have negated inertia; the axes are the same.
+  const Eigen::SelfAdjointEigenSolver<Mat3> solver(mp.volume < 0 ? Mat3(-mp.inertia) : mp.inertia);
+  Mat3 axes = solver.eigenvectors();  // columns, ascending eigenvalues
+  for (int k = 0; k < 2; ++k) {
+    double third_moment = 0.0;
+    for (const Vec3& v : mesh.vertices) {
+      const double along = axes.col(k).dot(v - mp.center_of_mass);
+      third_moment += along * along * along;
+    }
+    if (third_moment < 0) axes.col(k) = -axes.col(k);
+  }
+  axes.col(2) = axes.col(0).cross(axes.col(1));
+  lie::Pose frame;
+  frame.R = axes;
+  frame.p = mp.center_of_mass;
+  return frame;
 }
 
 }  // namespace graspecmf::geometry

@@ -75,4 +75,10 @@ TriangleMesh transformed(const TriangleMesh& mesh, const lie::Pose& pose) {
   return out;
 }
 
+TriangleMesh quantized(const TriangleMesh& mesh, double grid) {
+  TriangleMesh out = mesh;
+  for (Vec3& v : out.vertices) v = lie::rounded(v, grid);
+  return out;
+}
+
 }  // namespace graspecmf::geometry

@@ -42,5 +42,8 @@ double surface_area(const TriangleMesh& mesh);
 TriangleMesh scaled(const TriangleMesh& mesh, double factor);
 // Every vertex mapped by pose (R v + p).
 TriangleMesh transformed(const TriangleMesh& mesh, const lie::Pose& pose);
+// Every coordinate rounded to a multiple of `grid` (a power of two keeps it exact): meshes that
+// differ by round-off become bit-identical, except where a coordinate straddles a step.
+TriangleMesh quantized(const TriangleMesh& mesh, double grid);
 
 }  // namespace graspecmf::geometry

@@ -43,6 +43,16 @@ double pose_distance(const Pose& a, const Pose& b) {
   return std::hypot(so3_distance(a.R, b.R), (a.p - b.p).norm());
 }
 
+Pose quantized(const Pose& pose, double grid) {
+  Eigen::Quaterniond q(pose.R);
+  if (q.w() < 0) q.coeffs() = -q.coeffs();
+  q.coeffs() = rounded(Eigen::Vector4d(q.coeffs()), grid);
+  Pose out;
+  out.R = q.normalized().toRotationMatrix();
+  out.p = rounded(pose.p, grid);
+  return out;
+}
+
 Pose pose_interpolate(const Pose& a, const Pose& b, double t) {
   Pose x;
   x.R = so3_interpolate(a.R, b.R, t);

@@ -30,6 +30,15 @@ Vec3 apply(const Pose& pose, const Vec3& x);
 double pose_distance(const Pose& a, const Pose& b);
 // Rotation along the SO(3) geodesic, position along the straight line: the flow-matching path.
 Pose pose_interpolate(const Pose& a, const Pose& b, double t);
+// Every entry of a vector or matrix rounded to a multiple of grid.
+template <typename Matrix>
+Matrix rounded(const Matrix& m, double grid) {
+  return (m / grid).array().round() * grid;
+}
+// The pose with its position and its rotation's unit quaternion (w ≥ 0) rounded to multiples of
+// `grid` (a power of two keeps it exact), the quaternion renormalised: poses that differ by
+// round-off become bit-identical, except in the rare case that a coordinate straddles a step.
+Pose quantized(const Pose& pose, double grid);
 
 // Largest deviation of T from a proper rigid transform: max of |RᵀR − I| entries and of the last
 // row's distance from (0, 0, 0, 1); +∞ if det(R) ≤ 0 or any entry is not finite.

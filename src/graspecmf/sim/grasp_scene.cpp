@@ -2,6 +2,10 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/gripper/panda.hpp"
 
@@ -59,6 +63,47 @@ std::string finger_body(const char* name, const char* axis, const TrialConfig& c
 
 }  // namespace
 
+double contact_timeconst(const SceneObject& object, const TrialConfig& config) {
+  if (config.contact_reference_mass <= 0.0) return config.contact_timeconst;
+  return std::max(
+      2.0 * config.timestep,
+      config.contact_timeconst * std::sqrt(object.mass / config.contact_reference_mass));
+}
+
+lie::Pose simulation_frame(const SceneObject& object, const TrialConfig& config) {
+  lie::Pose frame;
+  if (config.legacy_object_frame) return frame;
+  frame.p = object.center_of_mass;
+  // The horizontal block of the inertia turns with the object about z; its principal axis with the
+  // larger moment, signed so the vertices' third moment along it is positive.
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(object.inertia.topLeftCorner<2, 2>());
+  Eigen::Vector2d axis = solver.eigenvectors().col(1);
+  double third_moment = 0.0;
+  for (const geometry::TriangleMesh& part : object.parts) {
+    for (const Eigen::Vector3d& v : part.vertices) {
+      const double along = axis.dot((v - object.center_of_mass).head<2>());
+      third_moment += along * along * along;
+    }
+  }
+  if (third_moment < 0) axis = -axis;
+  frame.R = Eigen::AngleAxisd(std::atan2(axis.y(), axis.x()), Eigen::Vector3d::UnitZ())
+                .toRotationMatrix();
+  return frame;
+}
+
+SceneObject expressed_in(const SceneObject& object, const lie::Pose& frame) {
+  const lie::Pose to_frame = lie::inverse(frame);
+  SceneObject out = object;
+  for (geometry::TriangleMesh& part : out.parts) {
+    part = geometry::quantized(geometry::transformed(part, to_frame), kRoundOffGrid);
+  }
+  out.center_of_mass = lie::rounded(lie::apply(to_frame, object.center_of_mass), kRoundOffGrid);
+  // The inertia on a grid 2⁻⁴⁰ of its trace's power of two: its round-off is far below the step.
+  const Eigen::Matrix3d inertia = to_frame.R * object.inertia * to_frame.R.transpose();
+  out.inertia = lie::rounded(inertia, std::ldexp(1.0, std::ilogb(inertia.trace()) - 40));
+  return out;
+}
+
 std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& config) {
   validate(config);
   if (object.parts.empty()) throw Error("grasp scene: the object has no convex parts");
@@ -110,7 +155,7 @@ std::string grasp_scene_mjcf(const SceneObject& object, const TrialConfig& confi
       fmt::arg("timestep", config.timestep), fmt::arg("impratio", config.friction_impedance_ratio),
       fmt::arg("solimp", fmt::format("{} {} {}", config.contact_dmin, config.contact_dmax,
                                      config.contact_width)),
-      fmt::arg("contact_timeconst", config.contact_timeconst), fmt::arg("assets", assets),
+      fmt::arg("contact_timeconst", contact_timeconst(object, config)), fmt::arg("assets", assets),
       fmt::arg("object_body", kObjectBody), fmt::arg("com", vec_text(object.center_of_mass)),
       fmt::arg("mass", object.mass), fmt::arg("ixx", I(0, 0)), fmt::arg("iyy", I(1, 1)),
       fmt::arg("izz", I(2, 2)), fmt::arg("ixy", I(0, 1)), fmt::arg("ixz", I(0, 2)),

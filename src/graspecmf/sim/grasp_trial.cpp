@@ -88,6 +88,8 @@ struct GraspSimulator::Impl {
     return static_cast<int>(std::lround(duration / config.timestep));
   }
 
+  lie::Pose frame;  // simulation_frame: the world frame of the scene, in object coordinates
+
   // The object's pose in the hand frame.
   lie::Pose relative_pose() const {
     return lie::compose(lie::inverse(body_pose(data, hand_body)), body_pose(data, object_body));
@@ -138,7 +140,9 @@ GraspSimulator::GraspSimulator(const SceneObject& object, const TrialConfig& con
     : impl_(std::make_unique<Impl>()) {
   install_mujoco_handlers();
   impl_->config = config;
-  impl_->model = compile(grasp_scene_mjcf(object, config));
+  impl_->frame = simulation_frame(object, config);
+  impl_->model = compile(grasp_scene_mjcf(
+      config.legacy_object_frame ? object : expressed_in(object, impl_->frame), config));
   impl_->data = mj_makeData(impl_->model);
   Impl& s = *impl_;
   const auto body = [&](const char* name) { return mj_name2id(s.model, mjOBJ_BODY, name); };
@@ -166,8 +170,12 @@ GraspSimulator::~GraspSimulator() {
   mj_deleteModel(impl_->model);
 }
 
-TrialResult GraspSimulator::run(const lie::Pose& grasp) {
+TrialResult GraspSimulator::run(const lie::Pose& object_grasp) {
   Impl& s = *impl_;
+  const lie::Pose grasp =
+      s.config.legacy_object_frame
+          ? object_grasp
+          : lie::quantized(lie::compose(lie::inverse(s.frame), object_grasp), kRoundOffGrid);
   const TrialConfig& c = s.config;
   mjModel* m = s.model;
   mjData* d = s.data;

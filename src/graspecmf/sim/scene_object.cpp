@@ -1,8 +1,7 @@
 #include "graspecmf/sim/scene_object.hpp"
 
-#include <cstdlib>
-
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/user_cache.hpp"
 #include "graspecmf/geometry/mass_properties.hpp"
 
 namespace graspecmf::sim {
@@ -13,7 +12,17 @@ SceneObject make_scene_object(const geometry::TriangleMesh& metric_mesh,
                               const geometry::DecompositionOptions& decomposition,
                               const fs::path& cache_dir) {
   SceneObject object;
-  object.parts = geometry::cached_convex_decomposition(metric_mesh, decomposition, cache_dir);
+  if (config.legacy_object_frame) {
+    object.parts = geometry::cached_convex_decomposition(metric_mesh, decomposition, cache_dir);
+  } else {
+    // Cut in a frame fixed to the solid, so that the parts move with the object. The lattice cuts
+    // are sensitive to round-off, so the mesh is quantised first.
+    const lie::Pose frame = geometry::principal_frame(metric_mesh);
+    object.parts = geometry::cached_convex_decomposition(
+        geometry::quantized(geometry::transformed(metric_mesh, lie::inverse(frame)), kRoundOffGrid),
+        decomposition, cache_dir);
+    for (geometry::TriangleMesh& part : object.parts) part = geometry::transformed(part, frame);
+  }
   if (info.mass && info.com && info.inertia) {
     object.mass = *info.mass;
     object.center_of_mass = *info.com;
@@ -30,13 +39,7 @@ SceneObject make_scene_object(const geometry::TriangleMesh& metric_mesh,
 }
 
 fs::path default_decomposition_cache() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg != nullptr && *xdg != '\0') {
-    return fs::path(xdg) / "graspecmf" / "decompositions";
-  }
-  if (const char* home = std::getenv("HOME"); home != nullptr && *home != '\0') {
-    return fs::path(home) / ".cache" / "graspecmf" / "decompositions";
-  }
-  return fs::temp_directory_path() / "graspecmf" / "decompositions";
+  return user_cache_dir("decompositions");
 }
 
 }  // namespace graspecmf::sim

@@ -12,7 +12,8 @@ namespace graspecmf::sim {
 
 // Mass, centre of mass and inertia come from the record where it stores them (ACRONYM's inertia
 // sign corrected), else from the closed mesh at the record's density or config.default_density.
-// Parts come from cached_convex_decomposition under cache_dir. Throws Error for an open mesh.
+// Parts come from cached_convex_decomposition under cache_dir, of the mesh in its principal frame
+// (in its own frame with config.legacy_object_frame). Throws Error for an open mesh.
 SceneObject make_scene_object(const geometry::TriangleMesh& metric_mesh,
                               const data::AcronymObjectInfo& info, const TrialConfig& config,
                               const geometry::DecompositionOptions& decomposition,

@@ -28,6 +28,7 @@ constexpr Field kFields[] = {
     {"torsional_friction", &TrialConfig::torsional_friction, Range::kNonNegative},
     {"friction_impedance_ratio", &TrialConfig::friction_impedance_ratio, Range::kPositive},
     {"contact_timeconst", &TrialConfig::contact_timeconst, Range::kPositive},
+    {"contact_reference_mass", &TrialConfig::contact_reference_mass, Range::kNonNegative},
     {"contact_dmin", &TrialConfig::contact_dmin, Range::kPositive},
     {"contact_dmax", &TrialConfig::contact_dmax, Range::kPositive},
     {"contact_width", &TrialConfig::contact_width, Range::kPositive},
@@ -56,7 +57,8 @@ struct Switch {
   const char* name;
   bool TrialConfig::*member;
 };
-constexpr Switch kSwitches[] = {{"mujoco_convex", &TrialConfig::mujoco_convex}};
+constexpr Switch kSwitches[] = {{"mujoco_convex", &TrialConfig::mujoco_convex},
+                                {"legacy_object_frame", &TrialConfig::legacy_object_frame}};
 
 }  // namespace
 

@@ -18,9 +18,15 @@ struct TrialConfig {
   double torsional_friction = 0.005;  // m, torsional friction (MuJoCo condim 4)
   // Contact compliance (MuJoCo solref/solimp): the finger pads are rubber, so contacts are soft.
   double contact_timeconst = 0.004;  // s, contact stiffness (solref; ≥ 2 × timestep)
-  double contact_dmin = 0.95;        // solimp impedance at zero penetration, in (0, 1)
-  double contact_dmax = 0.99;        // solimp impedance at contact_width penetration, in (0, 1)
-  double contact_width = 0.002;      // m, penetration over which the impedance ramps up
+  // MuJoCo's contact stiffness is per unit of mass (solref is a time constant), so a fixed
+  // contact_timeconst makes a heavier object's pads stiffer in newtons per metre. With a positive
+  // reference mass (kg), an object of mass m gets contact_timeconst × √(m / reference), at least
+  // 2 × timestep: the pads keep the force stiffness they have on an object of the reference mass,
+  // the ACRONYM sample mug they were tuned on. 0: contact_timeconst for every object.
+  double contact_reference_mass = 0.0130879738;
+  double contact_dmin = 0.95;    // solimp impedance at zero penetration, in (0, 1)
+  double contact_dmax = 0.99;    // solimp impedance at contact_width penetration, in (0, 1)
+  double contact_width = 0.002;  // m, penetration over which the impedance ramps up
   // A finger–object contact whose point lies on a finger's flat pad at least this far (m) inside
   // its edges is pushed along the pad's normal (sim/pad_contact_normals.hpp); negative: off, all
   // normals are MuJoCo's.
@@ -29,6 +35,13 @@ struct TrialConfig {
   // faster trials, contacts equal up to round-off and the extra contacts' tilt axes); true,
   // MuJoCo's own function, as datasets labelled before 2026-12-02 were.
   bool mujoco_convex = false;
+  // false (default): the trial does not depend on where the object sits. It is simulated in a
+  // frame at the object's centre of mass turned to its horizontal principal axis
+  // (sim::simulation_frame), and the convex decomposition is cut in the solid's principal frame
+  // (geometry::principal_frame). true: as datasets labelled before 2026-12-04, in the mesh frame,
+  // where a far mesh origin corrupts the free object's motion and labels change when the object
+  // and its grasps move together (docs/simulator.md, "Frame invariance").
+  bool legacy_object_frame = false;
   double default_density = 150;  // kg/m³, when the grasp file has no mass (ACRONYM: 150)
   // Hand: a free body welded softly to a moving target, fingers on force-limited slides.
   double hand_mass = 0.73;       // kg, Franka hand
