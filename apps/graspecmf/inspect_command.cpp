@@ -10,6 +10,7 @@
 
 #include "graspecmf/data/object_summary.hpp"
 #include "graspecmf/dataset/dataset_report.hpp"
+#include "graspecmf/geometry/watertight_cache.hpp"
 
 namespace graspecmf::apps {
 namespace {
@@ -18,6 +19,7 @@ struct InspectOptions {
   std::string grasp_file;
   std::string mesh_root;
   bool json = false;
+  bool no_repair = false;
 };
 
 double percent(std::size_t part, std::size_t whole) {
@@ -76,6 +78,19 @@ nlohmann::json to_json(const data::ObjectSummary& s) {
       {"genus", t.consistently_oriented ? nlohmann::json(t.genus) : nlohmann::json(nullptr)},
       {"bbox_min", vec_json(s.bounding_box.min)},
       {"bbox_max", vec_json(s.bounding_box.max)}};
+  j["mesh"]["repair"] = nullptr;
+  if (s.repair) {
+    const geometry::WatertightReport& w = *s.repair;
+    j["mesh"]["repair"] = {{"wrapped", w.wrapped},
+                           {"reoriented", w.reoriented},
+                           {"backend", geometry::watertight_backend()},
+                           {"alpha", w.alpha},
+                           {"offset", w.offset},
+                           {"hausdorff", w.distance.hausdorff()},
+                           {"vertices", w.vertices_after},
+                           {"triangles", w.triangles_after},
+                           {"genus", w.topology_after.genus}};
+  }
   nlohmann::json& check = j["mesh"]["mass_properties"];
   if (!s.mass_properties) {
     check = nullptr;
@@ -131,11 +146,17 @@ void print_text(const data::ObjectSummary& s, std::ostream& out) {
                        t.watertight ? "yes but inconsistently oriented" : "no",
                        t.num_boundary_edges, t.num_nonmanifold_edges, t.num_misoriented_edges);
   }
+  if (s.repair) {
+    out << fmt::format(
+        "repaired         {}, {} vertices: the volume, mass and inertia below are the wrap's\n",
+        geometry::repair_summary(*s.repair), s.repair->vertices_after);
+  }
   out << fmt::format("bbox min         {} m\n", vec_text(s.bounding_box.min));
   out << fmt::format("bbox max         {} m\n", vec_text(s.bounding_box.max));
   if (o.density) out << fmt::format("density          {:g} kg/m³\n", *o.density);
   if (!s.mass_properties) {
-    out << "volume           not computed: the mesh is not a closed, oriented surface\n";
+    out << "volume           not computed: the mesh is not a closed, oriented surface "
+           "(--no-repair)\n";
     return;
   }
   const geometry::MassProperties& m = *s.mass_properties;
@@ -259,6 +280,8 @@ void add_inspect_command(CLI::App& app) {
                   "Folder the file's object/file path is relative to (default: the folder above "
                   "the file's grasps/ folder)");
   cmd->add_flag("--json", options->json, "Print the summary as JSON");
+  cmd->add_flag("--no-repair", options->no_repair,
+                "Do not compute the volume and mass of an open mesh from its alpha wrap");
   cmd->callback([options] {
     if (std::filesystem::is_directory(options->grasp_file)) {
       const dataset::DatasetReport report = dataset::report_dataset(options->grasp_file);
@@ -269,8 +292,8 @@ void add_inspect_command(CLI::App& app) {
       }
       return;
     }
-    const data::ObjectSummary summary =
-        data::summarize_acronym_object(options->grasp_file, options->mesh_root);
+    const data::ObjectSummary summary = data::summarize_acronym_object(
+        options->grasp_file, options->mesh_root, !options->no_repair);
     if (options->json) {
       std::cout << to_json(summary).dump(2) << "\n";
     } else {

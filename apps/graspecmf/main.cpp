@@ -11,6 +11,7 @@
 #include "graspecmf/core/version.hpp"
 #include "inspect_command.hpp"
 #include "make_dataset_command.hpp"
+#include "prepare_mesh_command.hpp"
 #ifdef GRASPECMF_WITH_TORCH
 #include "blas_kernels.hpp"
 #include "model_commands.hpp"
@@ -32,6 +33,7 @@ int main(int argc, char** argv) {
   graspecmf::apps::add_inspect_command(app);
   graspecmf::apps::add_simulate_command(app);
   graspecmf::apps::add_make_dataset_command(app);
+  graspecmf::apps::add_prepare_mesh_command(app);
   graspecmf::apps::add_view_command(app);
 #ifdef GRASPECMF_WITH_TORCH
   graspecmf::apps::add_model_commands(app);

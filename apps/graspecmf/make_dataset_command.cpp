@@ -13,6 +13,8 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/progress.hpp"
 #include "graspecmf/dataset/make_dataset.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
+#include "object_units.hpp"
 
 namespace graspecmf::apps {
 namespace {
@@ -28,17 +30,21 @@ struct Preset {
 // mugs-v1: the project's first training set (METHOD.md §8): 130 mugs × 2000 candidates, 100 train /
 // 10 val / 20 test, labelled before the simulator had pad normals and its own convex collider.
 // mugs-v2: the same labelling budget spread over twice the shapes (200 mugs × 1000 candidates,
-// 150 / 20 / 30), labelled by the current simulator.
-constexpr Preset kPresets[] = {{"mugs-v1", 130, 10, 20, 2000, 20261122,
-                                R"({"pad_normal_inset": -1.0, "mujoco_convex": true})"},
-                               {"mugs-v2", 200, 20, 30, 1000, 20261202, "{}"}};
+// 150 / 20 / 30), labelled with both, in the mesh frame (before 2026-12-04).
+constexpr Preset kPresets[] = {
+    {"mugs-v1", 130, 10, 20, 2000, 20261122,
+     R"({"pad_normal_inset": -1.0, "mujoco_convex": true, "legacy_object_frame": true,
+         "contact_reference_mass": 0.0})"},
+    {"mugs-v2", 200, 20, 30, 1000, 20261202,
+     R"({"legacy_object_frame": true, "contact_reference_mass": 0.0})"}};
 
 struct MakeDatasetArgs {
   std::string preset, meshes, out, config_file, cache;
   std::size_t mugs = 0, grasps = 2000;
   std::uint64_t seed = 0;
-  bool grasps_given = false, seed_given = false;
-  double scale = 1.0, density = 150.0;
+  bool grasps_given = false, seed_given = false, no_repair = false;
+  ObjectUnits units;  // of --meshes
+  double density = 150.0;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 };
 
@@ -51,6 +57,7 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
   o.density = a.density;
   o.threads = a.threads;
   o.cache = a.cache;
+  o.repair = !a.no_repair;
   nlohmann::json trial = sim::read_trial_config_json(a.config_file);
   o.candidates.num_grasps = a.grasps;
   if (!a.preset.empty()) {
@@ -83,7 +90,17 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
   } else if (a.mugs > 0) {
     o.objects = dataset::procedural_mug_sources(a.mugs, a.seed);
   } else {
-    o.objects = dataset::mesh_folder_sources(a.meshes, a.scale);
+    o.objects = dataset::mesh_folder_sources(a.meshes, a.units.metres_per_unit());
+    // Wrong units would make every object of the folder fail: say so once, before labelling.
+    for (const dataset::ObjectSource& s : o.objects) {
+      geometry::TriangleMesh mesh;
+      try {
+        mesh = geometry::read_mesh(s.mesh_file);
+      } catch (const Error&) {
+        continue;  // make_dataset reports an unreadable mesh and skips its object
+      }
+      a.units.check(geometry::scaled(mesh, s.scale).vertices, s.mesh_file.string());
+    }
   }
   o.trial = sim::trial_config_from_json(trial);
   return o;
@@ -108,6 +125,7 @@ void run(const MakeDatasetArgs& a) {
       ++skipped;
       std::cerr << "\nskipped " << r.name << ": " << r.skipped << "\n";
     } else {
+      if (!r.repaired.empty()) std::cerr << "\nnote: " << r.repaired << "\n";
       ++(r.resumed ? resumed : made);
     }
   };
@@ -137,9 +155,10 @@ void add_make_dataset_command(CLI::App& app) {
       "model) or mugs-v2 (200 mugs × 1000 candidates, 150/20/30 split, current simulator)");
   cmd->add_option("--mugs", a->mugs, "Number of procedural mugs")->check(CLI::Range(1, 100000));
   CLI::Option* seed = cmd->add_option("--seed", a->seed, "Seed for mugs, candidates and the split");
-  cmd->add_option("--meshes", a->meshes, "Folder of your own .obj/.stl/.ply meshes");
-  cmd->add_option("--scale", a->scale, "Mesh units to metres for --meshes")
-      ->check(CLI::PositiveNumber);
+  cmd->add_option(
+      "--meshes", a->meshes,
+      "Folder of your own .obj/.stl/.ply/.glb/.gltf meshes (open ones are alpha-wrapped)");
+  a->units.add_options(cmd);
   cmd->add_option("--density", a->density, "Object density, kg/m³ (ACRONYM: 150)")
       ->check(CLI::PositiveNumber);
   CLI::Option* grasps =
@@ -150,6 +169,8 @@ void add_make_dataset_command(CLI::App& app) {
       ->required();
   cmd->add_option("--config", a->config_file, "Trial parameters (JSON; defaults for missing keys)");
   cmd->add_option("--cache", a->cache, "Convex-decomposition cache folder");
+  cmd->add_flag("--no-repair", a->no_repair,
+                "Skip --meshes meshes that are not closed solids instead of wrapping them");
   cmd->callback([a, seed, grasps] {
     a->seed_given = seed->count() > 0;
     a->grasps_given = grasps->count() > 0;

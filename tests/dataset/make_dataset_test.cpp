@@ -10,7 +10,9 @@
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/dataset/dataset_report.hpp"
+#include "graspecmf/geometry/mass_properties.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/geometry/watertight.hpp"
 #include "test_support.hpp"
 
 namespace graspecmf::dataset {
@@ -165,10 +167,9 @@ TEST(MakeDataset, UnwritableOutputFailsAtOnce) {
   EXPECT_FALSE(called);
 }
 
-TEST(MakeDataset, UserMeshesOpenOnesAreSkippedAndTheRunGoesOn) {
-  const ScratchDir dir;
+// A 5 × 5 × 8 cm box in centimetres, and the same box with a face missing, as a mesh folder.
+MakeDatasetOptions box_meshes(const ScratchDir& dir) {
   fs::create_directories(dir / "meshes");
-  // A 5 × 5 × 8 cm box in centimetres, and the same box with a face missing.
   geometry::TriangleMesh box = geometry::testing::make_box({-2.5, -2.5, 0}, {2.5, 2.5, 8});
   geometry::write_mesh(box, dir / "meshes/box.obj");
   box.triangles.pop_back();
@@ -176,19 +177,69 @@ TEST(MakeDataset, UserMeshesOpenOnesAreSkippedAndTheRunGoesOn) {
   MakeDatasetOptions o;
   o.out = dir / "out";
   o.cache = dir / "cache";
+  o.wrap_cache = dir / "wrap-cache";
+  o.wrap.alpha = {0.005, false};  // coarse: a quick wrap
   o.objects = mesh_folder_sources(dir / "meshes", 0.01);
+  o.candidates.num_grasps = 4;
+  return o;
+}
+
+TEST(MakeDataset, UserMeshesOpenOnesAreWrappedAndStoredClosed) {
+  const ScratchDir dir;
+  MakeDatasetOptions o = box_meshes(dir);
   ASSERT_EQ(o.objects.size(), 2u);
   EXPECT_EQ(o.objects[1].name, "open-box");
-  o.candidates.num_grasps = 4;
   const std::vector<ObjectOutcome> outcomes = make_dataset(o);
   EXPECT_TRUE(outcomes[0].skipped.empty()) << outcomes[0].skipped;
+  EXPECT_TRUE(outcomes[0].repaired.empty()) << outcomes[0].repaired;
   EXPECT_EQ(outcomes[0].candidates, 4u);
-  EXPECT_NE(outcomes[1].skipped.find("watertight"), std::string::npos) << outcomes[1].skipped;
-  EXPECT_TRUE(fs::exists(dir / "out/grasps/Object_box_0.01.h5"));
+  EXPECT_TRUE(outcomes[1].skipped.empty()) << outcomes[1].skipped;
+  EXPECT_EQ(outcomes[1].repaired.rfind("open-box is not watertight (", 0), 0u)
+      << outcomes[1].repaired;
+  EXPECT_NE(outcomes[1].repaired.find("Hausdorff distance"), std::string::npos);
   const data::AcronymGraspFile record =
       data::read_acronym_file(dir / "out/grasps/Object_box_0.01.h5");
   EXPECT_EQ(record.object.file, "meshes/Object/box.obj");
   EXPECT_DOUBLE_EQ(record.object.scale, 0.01);
+  // The closed box is stored as it was; the open one as its wrap, in the object's units, whose
+  // volume (× scale³) is the record's.
+  EXPECT_EQ(read_file(dir / "out/meshes/Object/box.obj"), read_file(dir / "meshes/box.obj"));
+  const data::AcronymGraspFile open =
+      data::read_acronym_file(dir / "out/grasps/Object_open-box_0.01.h5");
+  const geometry::TriangleMesh stored =
+      geometry::scaled(geometry::read_mesh(dir / "out/meshes/Object/open-box.obj"), 0.01);
+  EXPECT_TRUE(geometry::is_closed_outward(stored));
+  EXPECT_NEAR(geometry::mass_properties(stored).volume, *open.object.volume, 1e-15);
+  // The missing triangle (half a 5 cm face) is wider than 2 alpha: an opening, so the wrap is a
+  // closed shell 2 × offset thick around the box's walls, not a solid box.
+  EXPECT_GT(*open.object.volume, 0.0);
+  EXPECT_LT(*open.object.volume, 0.25 * 0.05 * 0.05 * 0.08);
+  // The same run again resumes both.
+  for (const ObjectOutcome& r : make_dataset(o)) EXPECT_TRUE(r.resumed) << r.name;
+}
+
+TEST(MakeDataset, UserMeshesOpenOnesAreSkippedWithoutRepair) {
+  const ScratchDir dir;
+  MakeDatasetOptions o = box_meshes(dir);
+  o.repair = false;
+  const std::vector<ObjectOutcome> outcomes = make_dataset(o);
+  EXPECT_TRUE(outcomes[0].skipped.empty()) << outcomes[0].skipped;
+  EXPECT_NE(outcomes[1].skipped.find("watertight"), std::string::npos) << outcomes[1].skipped;
+  EXPECT_FALSE(fs::exists(dir / "out/grasps/Object_open-box_0.01.h5"));
+  EXPECT_FALSE(fs::exists(dir / "wrap-cache"));
+  // The repair setting is part of the dataset's options...
+  o.repair = true;
+  EXPECT_THROW(make_dataset(o), Error);
+  // ...except for manifests written before it existed, whose objects were all closed: those
+  // resume with either setting (and now make the open box).
+  const fs::path manifest = dir / "out/manifest.json";
+  nlohmann::json old = nlohmann::json::parse(read_file(manifest));
+  for (nlohmann::json& entry : old["options"]["objects"]) ASSERT_EQ(entry.erase("repair"), 1u);
+  std::ofstream(manifest) << old.dump(1);
+  const std::vector<ObjectOutcome> resumed = make_dataset(o);
+  EXPECT_TRUE(resumed[0].resumed);
+  EXPECT_TRUE(resumed[1].skipped.empty()) << resumed[1].skipped;
+  EXPECT_FALSE(resumed[1].repaired.empty());
 }
 
 TEST(MakeDataset, BadOptionsAreErrors) {

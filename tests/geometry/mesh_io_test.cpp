@@ -2,7 +2,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -279,6 +281,85 @@ void expect_read_error(const fs::path& path, const std::string& fragment) {
   EXPECT_NE(message.find(path.filename().string()), std::string::npos) << message;
   EXPECT_NE(message.find(fragment), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
+// glTF 2.0 of the unit tetrahedron (outward triangles) under a node translated by +1 along x:
+// float positions and uint16 indices in one buffer, which is embedded as a data URI (.gltf) or
+// sits in the binary chunk (.glb).
+struct GltfTetrahedron {
+  std::string buffer;
+  std::string json(const std::string& buffer_uri) const {
+    const std::string uri = buffer_uri.empty() ? "" : R"(, "uri": ")" + buffer_uri + "\"";
+    return R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+ "nodes": [{"mesh": 0, "translation": [1, 0, 0]}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+ "buffers": [{"byteLength": 72)" +
+           uri + R"(}],
+ "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48, "target": 34962},
+                 {"buffer": 0, "byteOffset": 48, "byteLength": 24, "target": 34963}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 1]},
+               {"bufferView": 1, "componentType": 5123, "count": 12, "type": "SCALAR"}]})";
+  }
+  GltfTetrahedron() {
+    const float positions[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const std::uint16_t indices[12] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    buffer.append(reinterpret_cast<const char*>(positions), sizeof positions);
+    buffer.append(reinterpret_cast<const char*>(indices), sizeof indices);
+  }
+};
+
+std::string base64(const std::string& bytes) {
+  static const char* kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  for (std::size_t i = 0; i < bytes.size(); i += 3) {
+    std::uint32_t n = static_cast<std::uint8_t>(bytes[i]) << 16;
+    if (i + 1 < bytes.size()) n |= static_cast<std::uint8_t>(bytes[i + 1]) << 8;
+    if (i + 2 < bytes.size()) n |= static_cast<std::uint8_t>(bytes[i + 2]);
+    const std::size_t available = std::min<std::size_t>(3, bytes.size() - i);
+    for (std::size_t k = 0; k < 4; ++k) {
+      out += k <= available ? kDigits[(n >> (18 - 6 * k)) & 63] : '=';
+    }
+  }
+  return out;
+}
+
+void append_u32(std::string& out, std::uint32_t value) {
+  for (int i = 0; i < 4; ++i) out += static_cast<char>((value >> (8 * i)) & 0xffU);
+}
+
+void expect_translated_tetrahedron(const TriangleMesh& mesh) {
+  ASSERT_EQ(mesh.vertices.size(), 4u);
+  ASSERT_EQ(mesh.triangles.size(), 4u);
+  EXPECT_EQ(mesh.vertices[0], Vec3(1, 0, 0));
+  EXPECT_EQ(mesh.vertices[3], Vec3(1, 0, 1));
+  const MeshTopology t = analyze_topology(mesh);
+  EXPECT_TRUE(t.consistently_oriented);
+  EXPECT_EQ(t.genus, 0);
+}
+
+TEST(ReadMesh, GltfWithAnEmbeddedBufferAndNodeTransform) {
+  ScratchDir dir;
+  const GltfTetrahedron tet;
+  write_file(dir / "tet.gltf",
+             tet.json("data:application/octet-stream;base64," + base64(tet.buffer)));
+  expect_translated_tetrahedron(read_mesh(dir / "tet.gltf"));
+}
+
+TEST(ReadMesh, BinaryGlb) {
+  ScratchDir dir;
+  const GltfTetrahedron tet;
+  std::string json = tet.json("");
+  while (json.size() % 4 != 0) json += ' ';
+  std::string glb = "glTF";
+  append_u32(glb, 2);
+  append_u32(glb, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + tet.buffer.size()));
+  append_u32(glb, static_cast<std::uint32_t>(json.size()));
+  glb += "JSON" + json;
+  append_u32(glb, static_cast<std::uint32_t>(tet.buffer.size()));
+  glb += std::string("BIN\0", 4) + tet.buffer;
+  write_file(dir / "tet.GLB", glb);
+  expect_translated_tetrahedron(read_mesh(dir / "tet.GLB"));
 }
 
 TEST(ReadMeshErrors, MissingFile) {

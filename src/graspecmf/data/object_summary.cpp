@@ -4,11 +4,13 @@
 
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/geometry/watertight_cache.hpp"
 
 namespace graspecmf::data {
 namespace fs = std::filesystem;
 
-ObjectSummary summarize_acronym_object(const fs::path& grasp_file, const fs::path& mesh_root) {
+ObjectSummary summarize_acronym_object(const fs::path& grasp_file, const fs::path& mesh_root,
+                                       bool repair) {
   ObjectSummary summary;
   summary.grasp_file = grasp_file;
   summary.record = read_acronym_file(grasp_file);
@@ -23,9 +25,14 @@ ObjectSummary summarize_acronym_object(const fs::path& grasp_file, const fs::pat
   summary.num_triangles = mesh.triangles.size();
   summary.topology = geometry::analyze_topology(mesh);
   summary.bounding_box = geometry::bounding_box(mesh);
+  const double density = summary.record.object.density.value_or(1.0);
   if (summary.topology.consistently_oriented) {
-    summary.mass_properties =
-        geometry::mass_properties(mesh, summary.record.object.density.value_or(1.0));
+    summary.mass_properties = geometry::mass_properties(mesh, density);
+  } else if (repair) {
+    const geometry::ClosedMesh closed =
+        geometry::closed_mesh_for_simulation(mesh, summary.mesh_file.filename().string());
+    summary.repair = closed.report;
+    summary.mass_properties = geometry::mass_properties(closed.mesh, density);
   }
   return summary;
 }

@@ -8,6 +8,7 @@
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/geometry/mass_properties.hpp"
 #include "graspecmf/geometry/mesh_topology.hpp"
+#include "graspecmf/geometry/watertight.hpp"
 
 namespace graspecmf::data {
 
@@ -19,14 +20,20 @@ struct ObjectSummary {
   std::size_t num_vertices = 0, num_triangles = 0;
   geometry::MeshTopology topology;
   geometry::BoundingBox bounding_box;  // metric mesh
-  // Recomputed with the file's density (1 if absent); only for a closed, consistently oriented
-  // mesh.
+  // Recomputed with the file's density (1 if absent) for a closed, consistently oriented mesh,
+  // or, with repair, for the closed mesh repair made.
   std::optional<geometry::MassProperties> mass_properties;
+  // Set when the mesh was not consistently oriented and repair replaced it for the mass
+  // properties (geometry::closed_mesh_for_simulation: its alpha wrap).
+  std::optional<geometry::WatertightReport> repair;
 };
 
 // Reads the grasp file and the mesh it names (resolved against mesh_root; empty: the ACRONYM
-// default) and summarises both. Throws Error for unreadable files or a broken mesh.
+// default) and summarises both. With repair, a mesh that is not closed and consistently oriented
+// gets its mass properties from its alpha wrap (cached in geometry::default_watertight_cache()).
+// Throws Error for unreadable files or a broken mesh.
 ObjectSummary summarize_acronym_object(const std::filesystem::path& grasp_file,
-                                       const std::filesystem::path& mesh_root = {});
+                                       const std::filesystem::path& mesh_root = {},
+                                       bool repair = false);
 
 }  // namespace graspecmf::data

@@ -16,6 +16,7 @@
 #include "graspecmf/geometry/mass_properties.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/mesh_topology.hpp"
+#include "graspecmf/geometry/watertight_cache.hpp"
 #include "graspecmf/sim/batch.hpp"
 #include "graspecmf/sim/scene_object.hpp"
 #include "graspecmf/viz/render.hpp"
@@ -65,6 +66,10 @@ json mug_json(const geometry::MugParameters& m) {
           {"handle_high", m.handle_high}};
 }
 
+json length_json(const geometry::WrapLength& length) {
+  return {{"value", length.value}, {"relative", length.relative}};
+}
+
 // Everything that determines the dataset's content; a resumed run must match it exactly.
 json options_json(const MakeDatasetOptions& o) {
   const AntipodalOptions& c = o.candidates;
@@ -76,6 +81,10 @@ json options_json(const MakeDatasetOptions& o) {
       entry["mug"] = mug_json(*s.mug);
     } else {
       entry["mesh_file"] = fs::absolute(s.mesh_file).lexically_normal().string();
+      // How a mesh that is not a closed solid is wrapped (value 0: the default rule), or false.
+      entry["repair"] = o.repair ? json{{"alpha", length_json(o.wrap.alpha)},
+                                        {"offset", length_json(o.wrap.offset)}}
+                                 : json(false);
     }
     objects.push_back(entry);
   }
@@ -125,12 +134,39 @@ void write_manifest(const MakeDatasetOptions& o, const std::vector<ObjectOutcome
 
 // A manifest's options as this version writes them: manifests written before pad_normal_inset
 // and mujoco_convex existed were labelled with MuJoCo's own contact normals and convex collider,
-// which those settings call −1 and true.
+// which those settings call −1 and true; those written before legacy_object_frame and
+// contact_reference_mass existed were labelled in the mesh frame with one contact time constant
+// for every object, which those settings call true and 0.
 json upgraded_options(json options) {
   json& trial = options["trial"];
   if (trial.is_object() && !trial.contains("pad_normal_inset")) trial["pad_normal_inset"] = -1.0;
   if (trial.is_object() && !trial.contains("mujoco_convex")) trial["mujoco_convex"] = true;
+  if (trial.is_object() && !trial.contains("legacy_object_frame")) {
+    trial["legacy_object_frame"] = true;
+  }
+  if (trial.is_object() && !trial.contains("contact_reference_mass")) {
+    trial["contact_reference_mass"] = 0.0;
+  }
   return options;
+}
+
+// Manifests written before meshes could be repaired lack the objects' "repair" setting. Every
+// object they made was already closed, which any setting leaves as it is, so they take the
+// setting of the run that resumes them.
+json with_repair_settings(json found, const json& expected) {
+  if (!found.contains("objects") || !found["objects"].is_array() ||
+      found["objects"].size() != expected["objects"].size()) {
+    return found;
+  }
+  for (std::size_t i = 0; i < found["objects"].size(); ++i) {
+    json& entry = found["objects"][i];
+    const json& wanted = expected["objects"][i];
+    if (entry.is_object() && entry.contains("mesh_file") && !entry.contains("repair") &&
+        wanted.contains("repair")) {
+      entry["repair"] = wanted["repair"];
+    }
+  }
+  return found;
 }
 
 // Fails unless out can hold the dataset: creates the folders, refuses a folder made with other
@@ -148,7 +184,9 @@ void prepare_output(const MakeDatasetOptions& o) {
     } catch (const json::exception&) {
       throw Error(manifest.string() + ": unreadable; remove it or choose another --out");
     }
-    if (!existing.contains("options") || upgraded_options(existing["options"]) != options_json(o)) {
+    const json expected = options_json(o);
+    if (!existing.contains("options") ||
+        with_repair_settings(upgraded_options(existing["options"]), expected) != expected) {
       throw Error(o.out.string() +
                   " holds a dataset made with other options; choose another --out or remove it");
     }
@@ -175,12 +213,25 @@ std::optional<ObjectOutcome> resumed_outcome(const fs::path& out, const ObjectSo
   }
 }
 
-// The object's mesh as stored (raw units) and in metres; throws Error if it is unusable.
-std::pair<geometry::TriangleMesh, geometry::TriangleMesh> object_meshes(const ObjectSource& s) {
+// The object's mesh as stored (raw units) and in metres; throws Error if it is unusable. A mesh
+// that is not a closed, outward solid is replaced by its repair (with o.repair), noted in
+// `repaired`; the metric mesh is then the stored one times the scale, as readers will see it.
+std::pair<geometry::TriangleMesh, geometry::TriangleMesh> object_meshes(const ObjectSource& s,
+                                                                        const MakeDatasetOptions& o,
+                                                                        std::string& repaired) {
   geometry::TriangleMesh raw =
       s.mug ? geometry::mug_mesh(*s.mug) : geometry::read_mesh(s.mesh_file);
   geometry::TriangleMesh metric = geometry::scaled(raw, s.scale);
-  geometry::require_watertight(metric, s.name);
+  geometry::ClosedMeshOptions closing;
+  closing.repair = o.repair;
+  closing.wrap = o.wrap;
+  closing.cache_dir = o.wrap_cache;
+  geometry::ClosedMesh closed = geometry::closed_mesh_for_simulation(metric, s.name, closing);
+  if (closed.repaired) {
+    repaired = geometry::repair_note(s.name, closed.report);
+    raw = geometry::scaled(closed.mesh, 1.0 / s.scale);
+    metric = geometry::scaled(raw, s.scale);
+  }
   return {std::move(raw), std::move(metric)};
 }
 
@@ -194,7 +245,7 @@ ObjectOutcome make_object(const MakeDatasetOptions& o, std::size_t index,
   sim::SceneObject scene;
   std::vector<GraspCandidate> candidates;
   try {
-    std::tie(raw, metric) = object_meshes(s);
+    std::tie(raw, metric) = object_meshes(s, o, r.repaired);
     const geometry::MassProperties mp = geometry::mass_properties(metric, o.density);
     if (!(mp.volume > 0)) throw Error("the mesh is not outward oriented (negative volume)");
     info.file = mesh_file_name(s);
@@ -304,11 +355,12 @@ std::vector<ObjectSource> mesh_folder_sources(const fs::path& dir, double scale)
     std::string ext = entry.path().extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    if (entry.is_regular_file() && (ext == ".obj" || ext == ".stl" || ext == ".ply")) {
+    if (entry.is_regular_file() &&
+        (ext == ".obj" || ext == ".stl" || ext == ".ply" || ext == ".glb" || ext == ".gltf")) {
       files.push_back(entry.path());
     }
   }
-  if (files.empty()) throw Error(dir.string() + ": no .obj, .stl or .ply file");
+  if (files.empty()) throw Error(dir.string() + ": no .obj, .stl, .ply, .glb or .gltf file");
   std::sort(files.begin(), files.end());
   std::vector<ObjectSource> sources;
   std::set<std::string> names;

@@ -17,6 +17,7 @@
 #include "graspecmf/dataset/antipodal_candidates.hpp"
 #include "graspecmf/geometry/convex_decomposition.hpp"
 #include "graspecmf/geometry/procedural_mug.hpp"
+#include "graspecmf/geometry/watertight.hpp"
 #include "graspecmf/sim/trial_config.hpp"
 
 namespace graspecmf::dataset {
@@ -32,9 +33,9 @@ struct ObjectSource {
 
 // count procedural mugs, named mug-<seed>-<index>, with parameters drawn from the seed.
 std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_t seed);
-// Every .obj/.stl/.ply file directly in dir (sorted by name), named after the file's stem with
-// other characters replaced by '-'. Throws Error if dir is missing or holds no mesh file or two
-// files map to the same name.
+// Every .obj/.stl/.ply/.glb/.gltf file directly in dir (sorted by name), named after the file's
+// stem with other characters replaced by '-'. Throws Error if dir is missing or holds no mesh file
+// or two files map to the same name.
 std::vector<ObjectSource> mesh_folder_sources(const std::filesystem::path& dir, double scale);
 
 // The per-object timing log's name in the output folder (one JSON object per line).
@@ -52,6 +53,11 @@ struct MakeDatasetOptions {
   sim::TrialConfig trial;
   geometry::DecompositionOptions decomposition;
   std::filesystem::path cache;  // decomposition cache; empty = sim::default_decomposition_cache()
+  // A mesh that is not a closed, outward solid is alpha-wrapped (flipped if only inward) by
+  // geometry::closed_mesh_for_simulation and the wrap is stored and labelled; false skips it.
+  bool repair = true;
+  geometry::WatertightOptions wrap;  // the wrap's α and offset (defaults: 3 mm, α / 30)
+  std::filesystem::path wrap_cache;  // empty = geometry::default_watertight_cache()
   int threads = 1;
 };
 
@@ -59,6 +65,7 @@ struct ObjectOutcome {
   std::string name;
   std::string grasp_file;  // relative to out; empty when skipped
   std::string skipped;     // the reason, empty when the object was made
+  std::string repaired;    // geometry::repair_note when its mesh was wrapped or flipped
   bool resumed = false;    // its grasp file was already there
   std::size_t candidates = 0, successful = 0;
   std::size_t unstable = 0;  // trials that went unstable (0 when resumed: files do not record it)
@@ -75,7 +82,8 @@ struct DatasetProgress {
 
 // Makes (or resumes) the dataset; returns one outcome per object. Throws Error at once if out
 // cannot be written, if it holds a dataset made with other options, or if the options are invalid;
-// an object whose mesh is unreadable or not watertight is skipped with its reason.
+// an object whose mesh is unreadable (or, without repair, not watertight) is skipped with its
+// reason. A repaired object's meshes/ file holds the wrap (in the object's units).
 std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& options,
                                         const DatasetProgress& progress = {});
 

@@ -265,7 +265,7 @@ TriangleMesh read_obj(const fs::path& path) {
   return mesh;
 }
 
-// ---- STL and PLY through assimp ----
+// ---- STL, PLY and glTF through assimp ----
 
 TriangleMesh read_with_assimp(const fs::path& path) {
   Assimp::Importer importer;
@@ -399,10 +399,11 @@ TriangleMesh read_mesh(const fs::path& path) {
   TriangleMesh mesh;
   if (ext == ".obj") {
     mesh = read_obj(path);
-  } else if (ext == ".ply" || ext == ".stl") {
+  } else if (ext == ".ply" || ext == ".stl" || ext == ".glb" || ext == ".gltf") {
     mesh = read_with_assimp(path);
   } else {
-    fail_read(path, "unsupported extension '" + ext + "' (expected .obj, .stl or .ply)");
+    fail_read(path,
+              "unsupported extension '" + ext + "' (expected .obj, .stl, .ply, .glb or .gltf)");
   }
   weld(mesh);
   validate_mesh(mesh, "cannot read " + path.string());

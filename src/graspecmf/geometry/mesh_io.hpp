@@ -1,5 +1,6 @@
 #pragma once
-// Mesh files: OBJ (tinyobjloader), STL binary/ASCII and PLY (assimp) in; OBJ and PLY out.
+// Mesh files: OBJ (tinyobjloader), STL binary/ASCII, PLY and glTF 2.0 (.glb/.gltf) (assimp) in;
+// OBJ and PLY out.
 // Read meshes are welded (vertices at identical positions merged) and validated.
 
 #include <filesystem>
@@ -8,17 +9,18 @@
 
 namespace graspecmf::geometry {
 
-// Reads .obj, .stl or .ply (case-insensitive extension); polygons are triangulated and vertices at
-// identical positions merged. Throws Error (one line naming the file) if the file is missing,
-// unreadable, truncated, or fails validate_mesh.
+// Reads .obj, .stl, .ply, .glb or .gltf (case-insensitive extension); polygons are triangulated and
+// vertices at identical positions merged. Throws Error (one line naming the file) if the file is
+// missing, unreadable, truncated, or fails validate_mesh.
 //
-// OBJ: tinyobjloader parses the statements (faces, polygons, negative indices) and the vertices
-// keep their file order. Every line is also checked, because tinyobjloader silently reads
-// "nan", "inf", "1e" or a word as 0 and drops faces it cannot use: a `v` needs 3 to 7 numbers, each
-// token a whole number (read correctly rounded with std::from_chars, which also supplies the
-// coordinates: tinyobjloader's own parser is off in the last bits, which would break round trips)
-// with finite x, y, z; an `f` needs at least 3 corners of the form v, v/vt, v//vn or v/vt/vn with
-// non-zero integers; every face must yield its triangles with in-range vertex indices.
+// OBJ: tinyobjloader parses the statements (faces, polygons, negative indices; every group and
+// object, `g` and `o`, into the one mesh) and the vertices keep their file order. Every line is
+// also checked, because tinyobjloader silently reads "nan", "inf", "1e" or a word as 0 and drops
+// faces it cannot use: a `v` needs 3 to 7 numbers, each token a whole number (read correctly
+// rounded with std::from_chars, which also supplies the coordinates: tinyobjloader's own parser is
+// off in the last bits, which would break round trips) with finite x, y, z; an `f` needs at least 3
+// corners of the form v, v/vt, v//vn or v/vt/vn with non-zero integers; every face must yield its
+// triangles with in-range vertex indices.
 //
 // Truncation (a file cut at an arbitrary byte): the cut leaves a last line without a newline, or
 // none at all. Such a last line must be a complete statement: a known keyword and, for v/vn/vt/f,
@@ -30,8 +32,10 @@ namespace graspecmf::geometry {
 // sample mug, every cut in the vertex block and 71 % of the cuts in the face block are reported;
 // the others read as an open (not watertight) mesh.
 //
-// STL (binary and ASCII) and PLY: assimp, all meshes of the scene merged with node transforms
-// applied; points and lines are ignored. Debian's assimp stores positions as float, so PLY and STL
+// STL (binary and ASCII), PLY and glTF 2.0 (binary .glb, or .gltf with embedded or external
+// buffers): assimp, all meshes of the scene merged with node transforms applied; points and lines
+// are ignored. glTF coordinates are taken as they are (metres, +y up by the glTF convention; no
+// axis change). Debian's assimp stores positions as float, so PLY and STL
 // coordinates come back rounded to float precision (~6e-8 relative), even from a double PLY.
 //
 // Then, for every format: vertices at bit-identical positions are merged (−0 = +0; the first
