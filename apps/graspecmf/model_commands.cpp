@@ -20,6 +20,7 @@
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/geometry/object_size.hpp"
 #include "graspecmf/geometry/point_cloud_io.hpp"
 #include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
@@ -32,6 +33,7 @@
 #include "graspecmf/train/evaluation.hpp"
 #include "graspecmf/train/grasp_sampling.hpp"
 #include "graspecmf/train/trainer.hpp"
+#include "object_units.hpp"
 
 namespace graspecmf::apps {
 namespace fs = std::filesystem;
@@ -133,7 +135,7 @@ std::string filter_note(const gripper::GraspChecks& checks) {
 
 struct SampleArgs {
   std::string model, mesh, points, acronym, mesh_root, out;
-  double scale = 1.0;
+  ObjectUnits units;
   SamplingOverrides sampling;
   gripper::GraspChecks checks;
   std::size_t num = 100;
@@ -157,6 +159,8 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
   data::AcronymObjectInfo& info = input.info;
   if (!a.points.empty()) {
     std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
+    for (Eigen::Vector3d& p : cloud) p *= a.units.metres_per_unit();
+    a.units.check(cloud, a.points);
     if (a.checks.any()) input.filter_points = cloud;  // every point of the file
     // A seeded subset when the file has more points than the model was trained with.
     Rng rng(a.seed);
@@ -170,14 +174,16 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
   }
   geometry::TriangleMesh mesh;
   if (!a.mesh.empty()) {
-    mesh = geometry::scaled(geometry::read_mesh(a.mesh), a.scale);
+    mesh = geometry::scaled(geometry::read_mesh(a.mesh), a.units.metres_per_unit());
+    a.units.check(mesh.vertices, a.mesh);
     info.file = a.mesh;
-    info.scale = a.scale;
+    info.scale = a.units.metres_per_unit();
   } else {
     const data::AcronymGraspFile record = data::read_acronym_file(a.acronym);
     info = record.object;
     mesh = geometry::scaled(
         geometry::read_mesh(data::find_object_mesh(a.acronym, info.file, a.mesh_root)), info.scale);
+    a.units.check(mesh.vertices, a.acronym + "'s object", geometry::ScaleSource::kFile);
   }
   input.cloud = geometry::sample_surface(mesh, points, a.seed).points;
   if (a.checks.any()) input.filter_points = gripper::filter_cloud(mesh, a.seed);
@@ -222,6 +228,7 @@ struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
   std::string sim_config, cache;  // for --success
   bool baselines = false;
+  bool allow_any_size = false;
   gripper::GraspChecks checks;
   SamplingOverrides sampling;
   std::size_t num = 0;
@@ -257,6 +264,10 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
     object.mesh = geometry::scaled(
         geometry::read_mesh(data::find_object_mesh(a.acronym, record.object.file, a.mesh_root)),
         record.object.scale);
+    if (!a.allow_any_size) {
+      geometry::require_plausible_size(object.mesh.vertices, a.acronym + "'s object",
+                                       geometry::ScaleSource::kFile);
+    }
     object.grasps = record.successful_grasps();
     object.info = record.object;
     if (object.grasps.empty()) throw Error(a.acronym + ": no successful grasps to compare with");
@@ -497,8 +508,8 @@ void add_model_commands(CLI::App& app) {
   CLI::App* sample_cmd = app.add_subcommand("sample", "Generate grasps for an object");
   sample_cmd->add_option("--model", s->model, "Run folder of a trained model")->required();
   sample_cmd->add_option("--mesh", s->mesh, "Object mesh (.obj/.stl/.ply)");
-  sample_cmd->add_option("--scale", s->scale, "Mesh units to metres")->check(CLI::PositiveNumber);
-  sample_cmd->add_option("--points", s->points, "Point cloud (.xyz/.txt/.npy/.ply), metres");
+  sample_cmd->add_option("--points", s->points, "Point cloud (.xyz/.txt/.npy/.ply)");
+  s->units.add_options(sample_cmd);
   sample_cmd->add_option("--acronym", s->acronym, "ACRONYM grasp file naming the object");
   sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
   sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
@@ -519,6 +530,8 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--split", e->split, "train, val or test");
   eval_cmd->add_option("--acronym", e->acronym, "A single ACRONYM grasp file instead");
   eval_cmd->add_option("--mesh-root", e->mesh_root, "Folder the ACRONYM file's mesh is in");
+  eval_cmd->add_flag("--allow-any-size", e->allow_any_size,
+                     "Accept an --acronym object outside 1 cm – 1 m");
   eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
   add_sampling_options(eval_cmd, e->sampling);
   add_filter_flags(eval_cmd, e->checks,

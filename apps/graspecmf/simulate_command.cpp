@@ -3,10 +3,12 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <vector>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
@@ -14,6 +16,8 @@
 #include "graspecmf/core/version.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
+#include "graspecmf/geometry/object_size.hpp"
+#include "graspecmf/geometry/watertight_cache.hpp"
 #include "graspecmf/sim/batch.hpp"
 #include "graspecmf/sim/label_agreement.hpp"
 #include "graspecmf/sim/scene_object.hpp"
@@ -27,7 +31,22 @@ struct SimulateOptions {
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::size_t every = 1;
   bool compare_labels = false;
+  bool allow_any_size = false;
+  bool no_repair = false;
+  std::vector<double> move;  // x, y, z (m), yaw (degrees); empty: not moved
 };
+
+// The rigid motion of --move: a turn by yaw degrees about the gravity axis (z), then (x, y, z).
+lie::Pose move_motion(const std::vector<double>& move) {
+  lie::Pose motion;
+  if (move.empty()) return motion;
+  for (double v : move) {
+    if (!std::isfinite(v)) throw Error("--move: every value must be a finite number");
+  }
+  motion.R = Eigen::AngleAxisd(move[3] * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  motion.p = Eigen::Vector3d(move[0], move[1], move[2]);
+  return motion;
+}
 
 nlohmann::json agreement_json(const sim::LabelAgreement& a) {
   return {{"count", a.count},
@@ -57,18 +76,32 @@ void run(const SimulateOptions& o) {
   if (o.compare_labels && !record.qualities) {
     throw Error(o.grasp_file + ": --compare-labels needs the file's object_in_gripper labels");
   }
-  const geometry::TriangleMesh mesh = geometry::scaled(
-      geometry::read_mesh(data::find_object_mesh(o.grasp_file, record.object.file, o.mesh_root)),
-      record.object.scale);
+  // Simulated where --move puts the object and its grasps; written back in the file's frame.
+  const lie::Pose motion = move_motion(o.move);
+  const data::AcronymGraspFile simulated = data::moved_rigidly(record, motion);
+  const fs::path mesh_file = data::find_object_mesh(o.grasp_file, record.object.file, o.mesh_root);
+  const geometry::TriangleMesh open_mesh = geometry::transformed(
+      geometry::scaled(geometry::read_mesh(mesh_file), record.object.scale), motion);
+  if (!o.allow_any_size) {
+    geometry::require_plausible_size(open_mesh.vertices, o.grasp_file + "'s object",
+                                     geometry::ScaleSource::kFile);
+  }
+  geometry::ClosedMeshOptions closing;
+  closing.repair = !o.no_repair;
+  const geometry::ClosedMesh closed =
+      geometry::closed_mesh_for_simulation(open_mesh, mesh_file.string(), closing);
+  if (closed.repaired)
+    std::cerr << "note: " << geometry::repair_note(mesh_file.string(), closed.report) << "\n";
+  const geometry::TriangleMesh& mesh = closed.mesh;
   const fs::path cache = o.cache.empty() ? sim::default_decomposition_cache() : fs::path(o.cache);
-  const sim::SceneObject object = sim::make_scene_object(mesh, record.object, config, {}, cache);
+  const sim::SceneObject object = sim::make_scene_object(mesh, simulated.object, config, {}, cache);
 
   std::vector<std::size_t> indices;
   std::vector<lie::Pose> grasps;
   std::vector<std::int64_t> reference;
   for (std::size_t i = 0; i < record.size(); i += o.every) {
     indices.push_back(i);
-    grasps.push_back(lie::Pose::from_matrix(record.transforms[i]));
+    grasps.push_back(lie::Pose::from_matrix(simulated.transforms[i]));
     if (record.qualities) reference.push_back(record.qualities->object_in_gripper[i]);
   }
   ProgressLine progress("simulating", grasps.size());
@@ -148,6 +181,14 @@ void add_simulate_command(CLI::App& app) {
       ->check(CLI::Range(1, 1000000));
   cmd->add_option("--config", o->config_file, "Trial parameters (JSON; defaults for missing keys)");
   cmd->add_option("--cache", o->cache, "Convex-decomposition cache folder");
+  cmd->add_option("--move", o->move,
+                  "Simulate the object and its grasps moved rigidly: X Y Z (m) YAW (degrees about "
+                  "the gravity axis); labels should not change (a frame-invariance check)")
+      ->expected(4);
+  cmd->add_flag("--allow-any-size", o->allow_any_size,
+                "Accept an object outside 1 cm – 1 m (the size check catches a wrong scale)");
+  cmd->add_flag("--no-repair", o->no_repair,
+                "Refuse an object mesh that is not a closed solid instead of alpha-wrapping it");
   cmd->add_flag("--compare-labels", o->compare_labels,
                 "Report agreement with the file's object_in_gripper labels");
   cmd->callback([o] { run(*o); });

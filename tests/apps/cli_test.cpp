@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -121,6 +122,45 @@ TEST(Cli, EmptyMesh) {
   expect_one_error_line(run("inspect " + grasps.string(), dir), "no faces");
 }
 
+// A tetrahedron with 5 cm legs and one face missing, at the sample's scale, as OBJ text.
+std::string open_tetrahedron_obj() {
+  const double s = 0.0002682457830986903;
+  const double d = 0.05 / s, z = 0.07 / s;
+  return "v 0 0 " + std::to_string(z) + "\nv " + std::to_string(d) + " 0 " + std::to_string(z) +
+         "\nv 0 " + std::to_string(d) + " " + std::to_string(z) + "\nv 0 0 " +
+         std::to_string(z + d) + "\nf 1 3 2\nf 1 2 4\nf 1 4 3\n";
+}
+
+// Sets $XDG_CACHE_HOME for the commands a test runs, and unsets it afterwards.
+struct CacheHome {
+  explicit CacheHome(const fs::path& dir) { ::setenv("XDG_CACHE_HOME", dir.c_str(), 1); }
+  ~CacheHome() { ::unsetenv("XDG_CACHE_HOME"); }
+};
+
+TEST(Cli, InspectWrapsAnOpenMeshForItsVolumeUnlessToldNot) {
+  ScratchDir dir;
+  const CacheHome cache(dir / "cache");
+  const fs::path grasps = dataset_with_mesh(dir, open_tetrahedron_obj());
+  const CliRun r = run("inspect " + grasps.string(), dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("watertight       no (3 boundary"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("repaired         alpha wrap (alpha 1.73 mm"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("outward normals"), std::string::npos) << r.out;
+  EXPECT_TRUE(fs::exists(dir / "cache" / "graspecmf" / "watertight"));
+  const CliRun j = run("inspect --json " + grasps.string(), dir);
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const nlohmann::json json = nlohmann::json::parse(j.out);
+  EXPECT_EQ(json["mesh"]["watertight"], false);
+  EXPECT_EQ(json["mesh"]["repair"]["wrapped"], true);
+  EXPECT_EQ(json["mesh"]["repair"]["genus"], 0);
+  EXPECT_LT(json["mesh"]["repair"]["hausdorff"].get<double>(), 0.003);
+  EXPECT_GT(json["mesh"]["mass_properties"]["volume"].get<double>(), 0.0);
+  const CliRun off = run("inspect --no-repair " + grasps.string(), dir);
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(off.out.find("repaired"), std::string::npos) << off.out;
+  EXPECT_NE(off.out.find("volume           not computed"), std::string::npos) << off.out;
+}
+
 TEST(Cli, MeshRootOption) {
   ScratchDir dir;
   fs::create_directories(dir / "elsewhere");
@@ -209,6 +249,61 @@ TEST(CliMakeDataset, MakesAndResumesASmallMugDataset) {
   EXPECT_NE(inspect.out.find("watertight       yes"), std::string::npos) << inspect.out;
 }
 
+// The sample mug's grasps on an open tetrahedron: simulate wraps it, with a note, unless told not
+// to.
+TEST(CliSimulate, WrapsAnOpenMeshUnlessToldNot) {
+  ScratchDir dir;
+  const CacheHome cache(dir / "cache");
+  const fs::path grasps = dataset_with_mesh(dir, open_tetrahedron_obj());
+  const CliRun r = run("simulate " + grasps.string() + " --every 500 --threads 2", dir);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("is not watertight (3 boundary"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("using its alpha wrap"), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("4 grasps"), std::string::npos) << r.out;
+  expect_one_error_line(run("simulate " + grasps.string() + " --every 500 --no-repair", dir),
+                        "not watertight");
+}
+
+// Moved by metres and turned about gravity, the object and its grasps get the same trials.
+TEST(CliSimulate, MovedObjectGetsTheSameTrials) {
+  ScratchDir dir;
+  const std::string common = "simulate " + sample_grasp_file().string() +
+                             " --every 250 --threads 2 --cache " + (dir / "cache").string();
+  ASSERT_EQ(run(common + " --out " + (dir / "here.json").string(), dir).exit_code, 0);
+  const CliRun moved =
+      run(common + " --move 2.7 1.2 0 37 --out " + (dir / "there.json").string(), dir);
+  ASSERT_EQ(moved.exit_code, 0) << moved.err;
+  const nlohmann::json here = nlohmann::json::parse(read_file(dir / "here.json"));
+  const nlohmann::json there = nlohmann::json::parse(read_file(dir / "there.json"));
+  ASSERT_EQ(here["trials"].size(), 8u);
+  for (std::size_t k = 0; k < 8; ++k) {
+    EXPECT_EQ(here["trials"][k]["success"], there["trials"][k]["success"]) << k;
+    EXPECT_EQ(here["trials"][k]["shaking_linear"], there["trials"][k]["shaking_linear"]) << k;
+  }
+  expect_one_error_line(run(common + " --move 1 2 nan 0", dir), "--move");
+}
+
+// An object 1000 times too large stops with the likely fix: --units for a mesh folder, the file's
+// scale for an ACRONYM record.
+TEST(CliUnits, WrongUnitsStopWithTheLikelyFix) {
+  ScratchDir dir;
+  fs::create_directories(dir / "mm");
+  fs::copy_file(fs::path(GRASPECMF_DATA_DIR) / "real-object/mug-holes-mm.obj",
+                dir / "mm" / "mug.obj");
+  expect_one_error_line(run("make-dataset --meshes " + (dir / "mm").string() +
+                                " --grasps 10 --out " + (dir / "ds").string(),
+                            dir),
+                        "if it is in mm, give --units mm (or --scale 0.001)");
+  EXPECT_FALSE(fs::exists(dir / "ds" / "grasps"));
+  const double s = 0.0002682457830986903;
+  const std::string d = std::to_string(50.0 / s);
+  const fs::path grasps =
+      dataset_with_mesh(dir, "v 0 0 0\nv " + d + " 0 0\nv 0 " + d + " 0\nv 0 0 " + d +
+                                 "\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  expect_one_error_line(run("simulate " + grasps.string() + " --every 500", dir),
+                        "the file's scale is likely off by 0.001");
+}
+
 TEST(CliMakeDataset, BadInput) {
   ScratchDir dir;
   graspecmf::testing::write_file(dir / "file", "x");
@@ -250,6 +345,67 @@ TEST(CliMakeDataset, BadInput) {
       "not a folder");
   EXPECT_NE(run("make-dataset --mugs 1 --grasps 0 --out " + (dir / "d").string(), dir).exit_code,
             0);
+}
+
+TEST(CliPrepareMesh, WrapsTheMillimetreMugWithHolesAndReadsTheCacheTheSecondTime) {
+  ScratchDir dir;
+  const std::string in = (fs::path(GRASPECMF_DATA_DIR) / "real-object/mug-holes-mm.obj").string();
+  const std::string args = "prepare-mesh " + in + " --units mm --alpha 0.005 --offset 0.0002" +
+                           " --cache " + (dir / "cache").string() + " --out " +
+                           (dir / "mug.obj").string();
+  const CliRun text = run(args, dir);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("not watertight (16 boundary"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("wrap             alpha 5 mm, offset 0.2 mm (CGAL"), std::string::npos)
+      << text.out;
+  EXPECT_NE(text.out.find("genus            - → 1"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("Hausdorff        "), std::string::npos) << text.out;
+  const CliRun again = run(args + " --json", dir);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  const nlohmann::json j = nlohmann::json::parse(again.out);
+  EXPECT_EQ(j["wrapped"], true);
+  EXPECT_EQ(j["from_cache"], true);
+  EXPECT_EQ(j["scale"], 0.001);
+  EXPECT_EQ(j["alpha"], 0.005);
+  EXPECT_EQ(j["before"]["watertight"], false);
+  EXPECT_TRUE(j["before"]["genus"].is_null());
+  EXPECT_EQ(j["after"]["watertight"], true);
+  EXPECT_EQ(j["after"]["consistently_oriented"], true);
+  EXPECT_EQ(j["after"]["genus"], 1);
+  EXPECT_GT(j["after"]["volume"].get<double>(), 8.72532e-05);
+  EXPECT_LT(j["hausdorff"].get<double>(), 0.005);
+  // The written mesh is closed, in metres, and what the report describes.
+  const std::string written = read_file(dir / "mug.obj");
+  EXPECT_NE(written.find(std::to_string(j["after"]["vertices"].get<int>()) + " vertices"),
+            std::string::npos);
+  // A closed mesh is written unchanged unless --force.
+  const CliRun closed =
+      run("prepare-mesh " + sample_mesh_file().string() +
+              " --scale 0.0002682457830986903 --no-cache --out " + (dir / "closed.ply").string(),
+          dir);
+  ASSERT_EQ(closed.exit_code, 0) << closed.err;
+  EXPECT_NE(closed.out.find("wrap             not needed"), std::string::npos) << closed.out;
+  EXPECT_NE(closed.out.find("volume           8.72532e-05 m³ → 8.72532e-05 m³"), std::string::npos)
+      << closed.out;
+}
+
+TEST(CliPrepareMesh, BadInput) {
+  ScratchDir dir;
+  const std::string in = (fs::path(GRASPECMF_DATA_DIR) / "real-object/mug-holes-mm.obj").string();
+  expect_one_error_line(run("prepare-mesh " + in + " --units mm --out " + in, dir),
+                        "is the input file");
+  expect_one_error_line(
+      run("prepare-mesh " + in + " --units mm --alpha 3mm --out " + (dir / "a.obj").string(), dir),
+      "--alpha '3mm' is not a positive length");
+  expect_one_error_line(
+      run("prepare-mesh " + in + " --units mm --out " + (dir / "a.stl").string(), dir),
+      "must end in .obj or .ply");
+  expect_one_error_line(
+      run("prepare-mesh " + (dir / "missing.obj").string() + " --out " + (dir / "a.obj").string(),
+          dir),
+      "no such file");
+  EXPECT_FALSE(fs::exists(dir / "a.obj"));
+  EXPECT_FALSE(fs::exists(dir / "a.stl"));
 }
 
 }  // namespace
