@@ -24,6 +24,7 @@
 #include "graspecmf/geometry/point_cloud_io.hpp"
 #include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/geometry/watertight_cache.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/metrics/paired_comparison.hpp"
@@ -387,10 +388,16 @@ void run_evaluate(const EvaluateArgs& a) {
       }
     }
     if (a.success > 0) {
+      // The simulator needs a closed solid: an open --acronym mesh is alpha-wrapped, with a note.
+      const geometry::ClosedMesh closed =
+          geometry::closed_mesh_for_simulation(object.mesh, object.name);
+      if (closed.repaired) {
+        std::cerr << "note: " << geometry::repair_note(object.name, closed.report) << "\n";
+      }
       const sim::SceneObject scene = sim::make_scene_object(
-          object.mesh, object.info, trial_config, {},
+          closed.mesh, object.info, trial_config, {},
           a.cache.empty() ? sim::default_decomposition_cache() : fs::path(a.cache));
-      const geometry::MeshRayCaster mesh(object.mesh);
+      const geometry::MeshRayCaster mesh(closed.mesh);
       const sim::GraspOutcomes s =
           simulated_outcomes(scene, mesh, e.generated, a.success, trial_config, a.threads);
       entry["success"] = outcomes_json(s);
