@@ -11,6 +11,7 @@
 #include "graspecmf/data/object_summary.hpp"
 #include "graspecmf/dataset/dataset_report.hpp"
 #include "graspecmf/geometry/watertight_cache.hpp"
+#include "mesh_json.hpp"
 
 namespace graspecmf::apps {
 namespace {
@@ -67,17 +68,9 @@ nlohmann::json to_json(const data::ObjectSummary& s) {
                  {"labelled", r.qualities.has_value()},
                  {"max_rigidity_error", s.max_rigidity_error}};
   const geometry::MeshTopology& t = s.topology;
-  j["mesh"] = {
-      {"vertices", s.num_vertices},
-      {"triangles", s.num_triangles},
-      {"watertight", t.watertight},
-      {"consistently_oriented", t.consistently_oriented},
-      {"boundary_edges", t.num_boundary_edges},
-      {"nonmanifold_edges", t.num_nonmanifold_edges},
-      {"components", t.num_components},
-      {"genus", t.consistently_oriented ? nlohmann::json(t.genus) : nlohmann::json(nullptr)},
-      {"bbox_min", vec_json(s.bounding_box.min)},
-      {"bbox_max", vec_json(s.bounding_box.max)}};
+  j["mesh"] = mesh_topology_json(s.num_vertices, s.num_triangles, t);
+  j["mesh"]["bbox_min"] = vec_json(s.bounding_box.min);
+  j["mesh"]["bbox_max"] = vec_json(s.bounding_box.max);
   j["mesh"]["repair"] = nullptr;
   if (s.repair) {
     const geometry::WatertightReport& w = *s.repair;

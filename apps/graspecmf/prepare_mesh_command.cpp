@@ -15,6 +15,7 @@
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/watertight.hpp"
 #include "graspecmf/geometry/watertight_cache.hpp"
+#include "mesh_json.hpp"
 #include "object_units.hpp"
 
 namespace graspecmf::apps {
@@ -64,16 +65,9 @@ void check_paths(const PrepareMeshArgs& a) {
 
 nlohmann::json mesh_json(std::size_t vertices, std::size_t triangles,
                          const geometry::MeshTopology& t, const std::optional<double>& volume) {
-  return {{"vertices", vertices},
-          {"triangles", triangles},
-          {"components", t.num_components},
-          {"watertight", t.watertight},
-          {"consistently_oriented", t.consistently_oriented},
-          {"boundary_edges", t.num_boundary_edges},
-          {"nonmanifold_edges", t.num_nonmanifold_edges},
-          {"misoriented_edges", t.num_misoriented_edges},
-          {"genus", t.consistently_oriented ? nlohmann::json(t.genus) : nlohmann::json(nullptr)},
-          {"volume", volume ? nlohmann::json(*volume) : nlohmann::json(nullptr)}};
+  nlohmann::json j = mesh_topology_json(vertices, triangles, t);
+  j["volume"] = volume ? nlohmann::json(*volume) : nlohmann::json(nullptr);
+  return j;
 }
 
 nlohmann::json to_json(const PrepareMeshArgs& a, double scale,
