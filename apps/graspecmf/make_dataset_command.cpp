@@ -99,7 +99,7 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
       } catch (const Error&) {
         continue;  // make_dataset reports an unreadable mesh and skips its object
       }
-      a.units.check(geometry::scaled(mesh, s.scale).vertices, s.mesh_file.string());
+      a.units.size.check(geometry::scaled(mesh, s.scale).vertices, s.mesh_file.string());
     }
   }
   o.trial = sim::trial_config_from_json(trial);

@@ -161,7 +161,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
   if (!a.points.empty()) {
     std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
     for (Eigen::Vector3d& p : cloud) p *= a.units.metres_per_unit();
-    a.units.check(cloud, a.points);
+    a.units.size.check(cloud, a.points);
     if (a.checks.any()) input.filter_points = cloud;  // every point of the file
     // A seeded subset when the file has more points than the model was trained with.
     Rng rng(a.seed);
@@ -176,7 +176,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
   geometry::TriangleMesh mesh;
   if (!a.mesh.empty()) {
     mesh = geometry::scaled(geometry::read_mesh(a.mesh), a.units.metres_per_unit());
-    a.units.check(mesh.vertices, a.mesh);
+    a.units.size.check(mesh.vertices, a.mesh);
     info.file = a.mesh;
     info.scale = a.units.metres_per_unit();
   } else {
@@ -184,7 +184,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
     info = record.object;
     mesh = geometry::scaled(
         geometry::read_mesh(data::find_object_mesh(a.acronym, info.file, a.mesh_root)), info.scale);
-    a.units.check(mesh.vertices, a.acronym + "'s object", geometry::ScaleSource::kFile);
+    a.units.size.check(mesh.vertices, a.acronym + "'s object", geometry::ScaleSource::kFile);
   }
   input.cloud = geometry::sample_surface(mesh, points, a.seed).points;
   if (a.checks.any()) input.filter_points = gripper::filter_cloud(mesh, a.seed);
@@ -229,7 +229,7 @@ struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
   std::string sim_config, cache;  // for --success
   bool baselines = false;
-  bool allow_any_size = false;
+  SizeCheck size;  // of an --acronym object
   gripper::GraspChecks checks;
   SamplingOverrides sampling;
   std::size_t num = 0;
@@ -265,10 +265,7 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
     object.mesh = geometry::scaled(
         geometry::read_mesh(data::find_object_mesh(a.acronym, record.object.file, a.mesh_root)),
         record.object.scale);
-    if (!a.allow_any_size) {
-      geometry::require_plausible_size(object.mesh.vertices, a.acronym + "'s object",
-                                       geometry::ScaleSource::kFile);
-    }
+    a.size.check(object.mesh.vertices, a.acronym + "'s object", geometry::ScaleSource::kFile);
     object.grasps = record.successful_grasps();
     object.info = record.object;
     if (object.grasps.empty()) throw Error(a.acronym + ": no successful grasps to compare with");
@@ -537,8 +534,7 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--split", e->split, "train, val or test");
   eval_cmd->add_option("--acronym", e->acronym, "A single ACRONYM grasp file instead");
   eval_cmd->add_option("--mesh-root", e->mesh_root, "Folder the ACRONYM file's mesh is in");
-  eval_cmd->add_flag("--allow-any-size", e->allow_any_size,
-                     "Accept an --acronym object outside 1 cm – 1 m");
+  e->size.add_option(eval_cmd);
   eval_cmd->add_option("--num", e->num, "Grasps per object and rotation (default: all successful)");
   add_sampling_options(eval_cmd, e->sampling);
   add_filter_flags(eval_cmd, e->checks,

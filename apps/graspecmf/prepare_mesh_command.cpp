@@ -148,7 +148,7 @@ void run(const PrepareMeshArgs& a) {
   options.force = a.force;
   const double scale = a.units.metres_per_unit();
   const geometry::TriangleMesh metric = geometry::scaled(geometry::read_mesh(a.in), scale);
-  a.units.check(metric.vertices, a.in);
+  a.units.size.check(metric.vertices, a.in);
   const fs::path cache = a.cache.empty() ? geometry::default_watertight_cache() : fs::path(a.cache);
   const geometry::WatertightResult result =
       a.no_cache ? geometry::make_watertight(metric, options)

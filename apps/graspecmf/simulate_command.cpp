@@ -16,11 +16,11 @@
 #include "graspecmf/core/version.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
-#include "graspecmf/geometry/object_size.hpp"
 #include "graspecmf/geometry/watertight_cache.hpp"
 #include "graspecmf/sim/batch.hpp"
 #include "graspecmf/sim/label_agreement.hpp"
 #include "graspecmf/sim/scene_object.hpp"
+#include "object_units.hpp"
 
 namespace graspecmf::apps {
 namespace fs = std::filesystem;
@@ -31,7 +31,7 @@ struct SimulateOptions {
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::size_t every = 1;
   bool compare_labels = false;
-  bool allow_any_size = false;
+  SizeCheck size;
   bool no_repair = false;
   std::vector<double> move;  // x, y, z (m), yaw (degrees); empty: not moved
 };
@@ -82,10 +82,7 @@ void run(const SimulateOptions& o) {
   const fs::path mesh_file = data::find_object_mesh(o.grasp_file, record.object.file, o.mesh_root);
   const geometry::TriangleMesh open_mesh = geometry::transformed(
       geometry::scaled(geometry::read_mesh(mesh_file), record.object.scale), motion);
-  if (!o.allow_any_size) {
-    geometry::require_plausible_size(open_mesh.vertices, o.grasp_file + "'s object",
-                                     geometry::ScaleSource::kFile);
-  }
+  o.size.check(open_mesh.vertices, o.grasp_file + "'s object", geometry::ScaleSource::kFile);
   geometry::ClosedMeshOptions closing;
   closing.repair = !o.no_repair;
   const geometry::ClosedMesh closed =
@@ -185,8 +182,7 @@ void add_simulate_command(CLI::App& app) {
                   "Simulate the object and its grasps moved rigidly: X Y Z (m) YAW (degrees about "
                   "the gravity axis); labels should not change (a frame-invariance check)")
       ->expected(4);
-  cmd->add_flag("--allow-any-size", o->allow_any_size,
-                "Accept an object outside 1 cm – 1 m (the size check catches a wrong scale)");
+  o->size.add_option(cmd);
   cmd->add_flag("--no-repair", o->no_repair,
                 "Refuse an object mesh that is not a closed solid instead of alpha-wrapping it");
   cmd->add_flag("--compare-labels", o->compare_labels,

@@ -46,18 +46,22 @@ MassProperties mass_properties(const TriangleMesh& mesh, double density) {
   return out;
 }
 
+double third_moment(const std::vector<Vec3>& points, const Vec3& centre, const Vec3& axis) {
+  double sum = 0.0;
+  for (const Vec3& p : points) {
+    const double along = axis.dot(p - centre);
+    sum += along * along * along;
+  }
+  return sum;
+}
+
 lie::Pose principal_frame(const TriangleMesh& mesh) {
   const MassProperties mp = mass_properties(mesh);
   // Inward-facing meshes have negated inertia; the axes are the same.
   const Eigen::SelfAdjointEigenSolver<Mat3> solver(mp.volume < 0 ? Mat3(-mp.inertia) : mp.inertia);
   Mat3 axes = solver.eigenvectors();  // columns, ascending eigenvalues
   for (int k = 0; k < 2; ++k) {
-    double third_moment = 0.0;
-    for (const Vec3& v : mesh.vertices) {
-      const double along = axes.col(k).dot(v - mp.center_of_mass);
-      third_moment += along * along * along;
-    }
-    if (third_moment < 0) axes.col(k) = -axes.col(k);
+    if (third_moment(mesh.vertices, mp.center_of_mass, axes.col(k)) < 0) axes.col(k) *= -1.0;
   }
   axes.col(2) = axes.col(0).cross(axes.col(1));
   lie::Pose frame;

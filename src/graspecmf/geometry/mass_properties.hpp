@@ -21,6 +21,10 @@ struct MassProperties {
 // inertia. Throws Error if the mesh has no triangles or its volume is zero (|V| ≤ 1e-12 × extent³).
 MassProperties mass_properties(const TriangleMesh& mesh, double density = 1.0);
 
+// Σ ((p − centre) · axis)³ over the points: its sign tells the two directions of a symmetry axis
+// apart in a way that moves with the points.
+double third_moment(const std::vector<Vec3>& points, const Vec3& centre, const Vec3& axis);
+
 // A frame fixed to a closed mesh's solid, so that it moves rigidly with the mesh: origin at the
 // centre of mass, axes the principal axes of inertia (ascending moments), each axis signed so that
 // the vertices' third moment along it is positive (the last axis completes a right-handed frame).

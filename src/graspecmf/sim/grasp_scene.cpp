@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/mass_properties.hpp"
 #include "graspecmf/gripper/panda.hpp"
 
 namespace graspecmf::sim {
@@ -77,15 +78,12 @@ lie::Pose simulation_frame(const SceneObject& object, const TrialConfig& config)
   // The horizontal block of the inertia turns with the object about z; its principal axis with the
   // larger moment, signed so the vertices' third moment along it is positive.
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> solver(object.inertia.topLeftCorner<2, 2>());
-  Eigen::Vector2d axis = solver.eigenvectors().col(1);
-  double third_moment = 0.0;
+  Eigen::Vector3d axis(solver.eigenvectors()(0, 1), solver.eigenvectors()(1, 1), 0.0);
+  double moment = 0.0;
   for (const geometry::TriangleMesh& part : object.parts) {
-    for (const Eigen::Vector3d& v : part.vertices) {
-      const double along = axis.dot((v - object.center_of_mass).head<2>());
-      third_moment += along * along * along;
-    }
+    moment += geometry::third_moment(part.vertices, object.center_of_mass, axis);
   }
-  if (third_moment < 0) axis = -axis;
+  if (moment < 0) axis = -axis;
   frame.R = Eigen::AngleAxisd(std::atan2(axis.y(), axis.x()), Eigen::Vector3d::UnitZ())
                 .toRotationMatrix();
   return frame;
