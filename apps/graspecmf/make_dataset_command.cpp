@@ -26,20 +26,29 @@ struct Preset {
   // The trial settings (sim::TrialConfig JSON) that give the contact model the preset was
   // labelled with; a --config may not set them.
   const char* fixed_trial;
+  geometry::MugFamily family;
 };
 // mugs-v1: the project's first training set (METHOD.md §8): 130 mugs × 2000 candidates, 100 train /
 // 10 val / 20 test, labelled before the simulator had pad normals and its own convex collider.
 // mugs-v2: the same labelling budget spread over twice the shapes (200 mugs × 1000 candidates,
 // 150 / 20 / 30), labelled with both, in the mesh frame (before 2026-12-04).
+// mugs-v3: the varied family (flared lips, uneven surfaces, cups without handles, wider sizes),
+// 180 mugs × 300 candidates, 140 / 15 / 25, labelled in the simulation frame; the bundled model's
+// training set.
 constexpr Preset kPresets[] = {
     {"mugs-v1", 130, 10, 20, 2000, 20261122,
      R"({"pad_normal_inset": -1.0, "mujoco_convex": true, "legacy_object_frame": true,
-         "contact_reference_mass": 0.0})"},
+         "contact_reference_mass": 0.0})",
+     geometry::MugFamily::classic},
     {"mugs-v2", 200, 20, 30, 1000, 20261202,
-     R"({"legacy_object_frame": true, "contact_reference_mass": 0.0})"}};
+     R"({"legacy_object_frame": true, "contact_reference_mass": 0.0})",
+     geometry::MugFamily::classic},
+    {"mugs-v3", 180, 15, 25, 300, 20261204,
+     R"({"legacy_object_frame": false, "contact_reference_mass": 0.0130879738})",
+     geometry::MugFamily::varied}};
 
 struct MakeDatasetArgs {
-  std::string preset, meshes, out, config_file, cache;
+  std::string preset, meshes, out, config_file, cache, family = "varied";
   std::size_t mugs = 0, grasps = 2000;
   std::uint64_t seed = 0;
   bool grasps_given = false, seed_given = false, no_repair = false;
@@ -76,7 +85,7 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
     o.candidates.num_grasps = preset->grasps;
     o.preset = preset->name;
     o.seed = preset->seed;
-    o.objects = dataset::procedural_mug_sources(preset->mugs, preset->seed);
+    o.objects = dataset::procedural_mug_sources(preset->mugs, preset->seed, preset->family);
     o.val_count = preset->val;
     o.test_count = preset->test;
     const nlohmann::json fixed = nlohmann::json::parse(preset->fixed_trial);
@@ -88,7 +97,8 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
       trial[key] = value;
     }
   } else if (a.mugs > 0) {
-    o.objects = dataset::procedural_mug_sources(a.mugs, a.seed);
+    o.objects =
+        dataset::procedural_mug_sources(a.mugs, a.seed, geometry::mug_family_from_string(a.family));
   } else {
     o.objects = dataset::mesh_folder_sources(a.meshes, a.units.metres_per_unit());
     // Wrong units would make every object of the folder fail: say so once, before labelling.
@@ -152,8 +162,12 @@ void add_make_dataset_command(CLI::App& app) {
   cmd->add_option(
       "--preset", a->preset,
       "Named dataset: mugs-v1 (130 mugs × 2000 candidates, 100/10/20 split, legacy contact "
-      "model) or mugs-v2 (200 mugs × 1000 candidates, 150/20/30 split, current simulator)");
+      "model), mugs-v2 (200 mugs × 1000 candidates, 150/20/30, mesh-frame simulator) or mugs-v3 "
+      "(180 varied mugs × 300 candidates, 140/15/25, current simulator)");
   cmd->add_option("--mugs", a->mugs, "Number of procedural mugs")->check(CLI::Range(1, 100000));
+  cmd->add_option("--family", a->family,
+                  "Procedural family of --mugs: varied (default) or classic (mugs-v1/v2 shapes)")
+      ->check(CLI::IsMember({"varied", "classic"}));
   CLI::Option* seed = cmd->add_option("--seed", a->seed, "Seed for mugs, candidates and the split");
   cmd->add_option(
       "--meshes", a->meshes,

@@ -27,7 +27,7 @@ MakeDatasetOptions small_mugs(const fs::path& out, const fs::path& cache) {
   MakeDatasetOptions o;
   o.out = out;
   o.cache = cache;
-  o.objects = procedural_mug_sources(2, 11);
+  o.objects = procedural_mug_sources(2, 11, geometry::MugFamily::classic);
   o.seed = 11;
   o.candidates.num_grasps = 6;
   o.val_count = 1;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "graspecmf/core/error.hpp"
@@ -14,15 +15,22 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-MugParameters seeded_mug(std::uint64_t seed) {
+MugParameters seeded_mug(std::uint64_t seed, MugFamily family = MugFamily::classic) {
   Rng rng(seed);
-  return random_mug_parameters(rng);
+  return random_mug_parameters(rng, family);
 }
 
-TEST(ProceduralMug, ManySeedsGiveClosedOutwardManifoldsOfTheRightGenus) {
+// The mesh battery, run for every family.
+class EveryFamily : public ::testing::TestWithParam<MugFamily> {};
+
+INSTANTIATE_TEST_SUITE_P(ProceduralMug, EveryFamily,
+                         ::testing::Values(MugFamily::classic, MugFamily::varied),
+                         [](const auto& param_info) { return to_string(param_info.param); });
+
+TEST_P(EveryFamily, ManySeedsGiveClosedOutwardManifoldsOfTheRightGenus) {
   int with_handle = 0;
   for (std::uint64_t seed = 0; seed < 60; ++seed) {
-    const MugParameters mug = seeded_mug(seed);
+    const MugParameters mug = seeded_mug(seed, GetParam());
     const TriangleMesh mesh = mug_mesh(mug);
     const MeshTopology topology = analyze_topology(mesh);
     ASSERT_TRUE(topology.consistently_oriented) << "seed " << seed;
@@ -33,8 +41,9 @@ TEST(ProceduralMug, ManySeedsGiveClosedOutwardManifoldsOfTheRightGenus) {
     ASSERT_GT(mass_properties(mesh).volume, 0.0) << "seed " << seed;
     with_handle += genus;
   }
-  EXPECT_GE(with_handle, 50);
-  EXPECT_LT(with_handle, 60);  // a few mugs have no handle
+  // A few mugs have no handle: 6 % of the classic family, 20 % of the varied one.
+  EXPECT_GE(with_handle, GetParam() == MugFamily::classic ? 50 : 38);
+  EXPECT_LT(with_handle, GetParam() == MugFamily::classic ? 60 : 56);
 }
 
 TEST(ProceduralMug, ParametersSpanTheRequestedRanges) {
@@ -104,9 +113,9 @@ TEST(ProceduralMug, CavityAndHandleHoleAreOutsideTheSolid) {
 }
 
 // Overlapping or self-intersecting sheets would give winding numbers other than 0 or 1.
-TEST(ProceduralMug, WindingNumberIsZeroOrOneEverywhere) {
+TEST_P(EveryFamily, WindingNumberIsZeroOrOneEverywhere) {
   for (std::uint64_t seed = 0; seed < 6; ++seed) {
-    const TriangleMesh mesh = mug_mesh(seeded_mug(seed));
+    const TriangleMesh mesh = mug_mesh(seeded_mug(seed, GetParam()));
     const BoundingBox box = bounding_box(mesh);
     Rng rng(100 + seed);
     for (int i = 0; i < 300; ++i) {
@@ -116,6 +125,67 @@ TEST(ProceduralMug, WindingNumberIsZeroOrOneEverywhere) {
       ASSERT_TRUE(std::abs(w) < 1e-6 || std::abs(w - 1.0) < 1e-6) << "seed " << seed << " w " << w;
     }
   }
+}
+
+TEST(ProceduralMug, VariedFamilyHasFlaresRoughSurfacesCupsAndWiderSizes) {
+  int flared = 0, rough = 0, cups = 0, short_ones = 0, tall_ones = 0;
+  for (std::uint64_t seed = 0; seed < 200; ++seed) {
+    const MugParameters mug = seeded_mug(seed, MugFamily::varied);
+    EXPECT_NO_THROW(validate(mug));
+    flared += mug.flare > 0.0;
+    rough += mug.roughness > 0.0;
+    cups += mug.handle == MugHandle::none;
+    short_ones += mug.height < 0.07;
+    tall_ones += mug.height > 0.13;
+    EXPECT_LE(mug.roughness, 0.25 * mug.wall);
+  }
+  // About 19 %, 36 % and 20 % after redraws, and 18 % of heights outside the classic range.
+  EXPECT_GT(flared, 30);
+  EXPECT_GT(rough, 40);
+  EXPECT_GT(cups, 20);
+  EXPECT_GT(short_ones, 10);
+  EXPECT_GT(tall_ones, 10);
+  // The classic family has none of the new features.
+  for (std::uint64_t seed = 0; seed < 50; ++seed) {
+    const MugParameters mug = seeded_mug(seed);
+    EXPECT_EQ(mug.flare, 0.0);
+    EXPECT_EQ(mug.roughness, 0.0);
+  }
+}
+
+TEST(ProceduralMug, FlareWidensTheLipAndRoughnessStaysWithinItsAmplitude) {
+  MugParameters mug;
+  mug.handle = MugHandle::none;
+  mug.flare = 0.006;
+  mug.flare_height = 0.2;
+  const BoundingBox flared = bounding_box(mug_mesh(mug));
+  EXPECT_NEAR(flared.max.x(), mug.outer_radius + mug.flare, 1e-9);
+  mug.flare = 0.0;
+  mug.roughness = 0.001;
+  mug.roughness_seed = 5;
+  const TriangleMesh rough = mug_mesh(mug);
+  const TriangleMesh smooth = [&] {
+    MugParameters m = mug;
+    m.roughness = 0.0;
+    return mug_mesh(m);
+  }();
+  ASSERT_EQ(rough.vertices.size(), smooth.vertices.size());
+  double largest = 0.0;
+  for (std::size_t i = 0; i < rough.vertices.size(); ++i) {
+    const double moved = (rough.vertices[i] - smooth.vertices[i]).norm();
+    EXPECT_LE(moved, mug.roughness + 1e-12);
+    EXPECT_NEAR(rough.vertices[i].z(), smooth.vertices[i].z(), 1e-15);  // radial only
+    largest = std::max(largest, moved);
+  }
+  EXPECT_GT(largest, 0.5 * mug.roughness);
+  EXPECT_TRUE(analyze_topology(rough).consistently_oriented);
+}
+
+TEST(ProceduralMug, FamilyNamesRoundTrip) {
+  for (MugFamily f : {MugFamily::classic, MugFamily::varied}) {
+    EXPECT_EQ(mug_family_from_string(to_string(f)), f);
+  }
+  EXPECT_THROW(mug_family_from_string("fancy"), Error);
 }
 
 TEST(ProceduralMug, InconsistentParametersAreRejected) {
@@ -133,6 +203,13 @@ TEST(ProceduralMug, InconsistentParametersAreRejected) {
   MugParameters nan;
   nan.height = std::nan("");
   EXPECT_THROW(validate(nan), Error);
+  MugParameters into_flare;
+  into_flare.flare = 0.005;
+  into_flare.flare_height = 0.3;  // the handle's upper attachment at 0.8 is in the flare
+  EXPECT_THROW(validate(into_flare), Error);
+  MugParameters too_rough;
+  too_rough.roughness = 0.5 * too_rough.wall;
+  EXPECT_THROW(validate(too_rough), Error);
   MugParameters no_handle;
   no_handle.handle = MugHandle::none;
   no_handle.handle_high = 0.99;  // ignored without a handle

@@ -63,7 +63,11 @@ json mug_json(const geometry::MugParameters& m) {
           {"handle_width", m.handle_width},
           {"handle_clearance", m.handle_clearance},
           {"handle_low", m.handle_low},
-          {"handle_high", m.handle_high}};
+          {"handle_high", m.handle_high},
+          {"flare", m.flare},
+          {"flare_height", m.flare_height},
+          {"roughness", m.roughness},
+          {"roughness_seed", m.roughness_seed}};
 }
 
 json length_json(const geometry::WrapLength& length) {
@@ -146,6 +150,16 @@ json upgraded_options(json options) {
   }
   if (trial.is_object() && !trial.contains("contact_reference_mass")) {
     trial["contact_reference_mass"] = 0.0;
+  }
+  // Mugs written before flared lips and rough surfaces existed had neither.
+  if (options.contains("objects") && options["objects"].is_array()) {
+    for (json& entry : options["objects"]) {
+      if (!entry.is_object() || !entry.contains("mug") || !entry["mug"].is_object()) continue;
+      for (const char* key : {"flare", "flare_height", "roughness"}) {
+        if (!entry["mug"].contains(key)) entry["mug"][key] = 0.0;
+      }
+      if (!entry["mug"].contains("roughness_seed")) entry["mug"]["roughness_seed"] = 0;
+    }
   }
   return options;
 }
@@ -335,14 +349,15 @@ void validate_sources(const std::vector<ObjectSource>& objects) {
 
 }  // namespace
 
-std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_t seed) {
+std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_t seed,
+                                                 geometry::MugFamily family) {
   std::vector<ObjectSource> sources;
   for (std::size_t i = 0; i < count; ++i) {
     Rng rng(derive_seed(seed, i, 0));
     ObjectSource s;
     s.name = fmt::format("mug-{}-{:04d}", seed, i);
     s.category = "Mug";
-    s.mug = geometry::random_mug_parameters(rng);
+    s.mug = geometry::random_mug_parameters(rng, family);
     sources.push_back(std::move(s));
   }
   return sources;

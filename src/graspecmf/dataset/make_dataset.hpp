@@ -31,8 +31,10 @@ struct ObjectSource {
   double scale = 1.0;
 };
 
-// count procedural mugs, named mug-<seed>-<index>, with parameters drawn from the seed.
-std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_t seed);
+// count procedural mugs of the family, named mug-<seed>-<index>, with parameters drawn from the
+// seed.
+std::vector<ObjectSource> procedural_mug_sources(std::size_t count, std::uint64_t seed,
+                                                 geometry::MugFamily family);
 // Every .obj/.stl/.ply/.glb/.gltf file directly in dir (sorted by name), named after the file's
 // stem with other characters replaced by '-'. Throws Error if dir is missing or holds no mesh file
 // or two files map to the same name.

@@ -22,10 +22,12 @@ constexpr double kTubeStep = 0.0025;     // m between handle cross-sections
 constexpr double kHandleMargin = 0.002;  // m between a handle footprint and the base or rim
 constexpr double kMinBend = 0.6;         // handle centreline curvature radius ≥ this × thickness
 constexpr double kMinInnerRadius = 0.003;
-constexpr double kNoHandleProbability = 0.06;
+constexpr int kDentWaves = 5;            // smooth terms of a rough surface
+constexpr double kJitterShare = 0.3;     // share of the roughness that is per-vertex jitter
+constexpr double kRoughnessRamp = 0.01;  // m: the roughness fades to 0 towards the axis
 
-double outer_radius_at(const MugParameters& mug, double z) {
-  const double s = z / mug.height;
+// The radius of the body shape alone, before any flare.
+double body_radius_at(const MugParameters& mug, double s) {
   switch (mug.body) {
     case MugBody::straight:
       return mug.outer_radius;
@@ -38,6 +40,64 @@ double outer_radius_at(const MugParameters& mug, double z) {
   }
   return mug.outer_radius;
 }
+
+// Height fraction where the flare begins (1 when there is none).
+double flare_start(const MugParameters& mug) {
+  return mug.flare > 0.0 ? 1.0 - mug.flare_height : 1.0;
+}
+
+double outer_radius_at(const MugParameters& mug, double z) {
+  const double s = z / mug.height;
+  const double start = flare_start(mug);
+  double radius = body_radius_at(mug, s);
+  if (mug.flare > 0.0 && s > start) {
+    radius += mug.flare * std::pow((s - start) / mug.flare_height, 2);
+  }
+  return radius;
+}
+
+// The radial displacement of a rough mug's surface: smooth dents that depend on (angle, height)
+// only, so the inner and outer walls move together, plus seeded per-vertex jitter.
+class SurfaceNoise {
+ public:
+  explicit SurfaceNoise(const MugParameters& mug) : mug_(mug), rng_(mug.roughness_seed) {
+    if (mug.roughness <= 0.0) return;
+    for (int i = 0; i < kDentWaves; ++i) {
+      Wave w;
+      w.amplitude = rng_.uniform(0.5, 1.0);
+      w.turns = 1 + static_cast<int>(rng_.index(6));
+      w.half_waves = rng_.uniform(0.5, 3.0);
+      w.phase_angle = rng_.uniform(0.0, 2.0 * kPi);
+      w.phase_height = rng_.uniform(0.0, 2.0 * kPi);
+      total_ += w.amplitude;
+      waves_.push_back(w);
+    }
+  }
+
+  // The displacement of the next vertex at (angle, height, radius); call once per vertex, in a
+  // fixed order (the jitter is drawn from the seeded stream).
+  double next(double theta, double z, double r) {
+    if (waves_.empty()) return 0.0;
+    double dent = 0.0;
+    for (const Wave& w : waves_) {
+      dent += w.amplitude * std::sin(w.turns * theta + w.phase_angle) *
+              std::cos(kPi * w.half_waves * z / mug_.height + w.phase_height);
+    }
+    const double jitter = rng_.uniform(-1.0, 1.0);
+    const double fade = std::min(1.0, r / kRoughnessRamp);
+    return mug_.roughness * fade * ((1.0 - kJitterShare) * dent / total_ + kJitterShare * jitter);
+  }
+
+ private:
+  struct Wave {
+    double amplitude = 0, half_waves = 0, phase_angle = 0, phase_height = 0;
+    int turns = 0;
+  };
+  const MugParameters& mug_;
+  Rng rng_;
+  std::vector<Wave> waves_;
+  double total_ = 0.0;
+};
 
 // Height where the outer wall ends and the rim begins.
 double wall_top(const MugParameters& mug) {
@@ -74,6 +134,13 @@ std::string problem(const MugParameters& mug) {
   if (outside(mug.body_amount, mug.body == MugBody::tapered ? -0.5 : 0.0, amount_limit)) {
     return "body_amount is out of range for the body shape";
   }
+  if (outside(mug.flare, 0.0, 0.02)) return "flare must be in [0, 0.02] m";
+  if (mug.flare > 0.0 && outside(mug.flare_height, 0.03, 0.5)) {
+    return "flare_height must be in [0.03, 0.5] when there is a flare";
+  }
+  if (outside(mug.roughness, 0.0, std::min(0.002, 0.25 * mug.wall))) {
+    return "roughness must be in [0, min(0.002 m, wall / 4)]";
+  }
   for (int i = 0; i <= 100; ++i) {
     if (outer_radius_at(mug, mug.height * i / 100.0) - mug.wall < kMinInnerRadius) {
       return "the wall leaves no cavity (outer radius − wall < 3 mm somewhere)";
@@ -93,6 +160,9 @@ std::string problem(const MugParameters& mug) {
   const double z_low = mug.handle_low * mug.height, z_high = mug.handle_high * mug.height;
   if (z_low - 0.5 * t < kHandleMargin || z_high + 0.5 * t > wall_top(mug) - kHandleMargin) {
     return "the handle's attachments do not fit between the base and the rim";
+  }
+  if (z_high + 0.5 * t > flare_start(mug) * mug.height) {
+    return "the handle's upper attachment reaches into the flare";
   }
   if ((z_high - z_low) - t < 2.0 * kWallStep) return "the handle's attachments overlap";
   if (mug.handle_width > 0.5 * outer_radius_at(mug, z_low) ||
@@ -158,7 +228,8 @@ Profile make_profile(const MugParameters& mug) {
 // Vertices of the surface of revolution: one per profile point on the axis, kSegments otherwise.
 class RevolvedGrid {
  public:
-  RevolvedGrid(const Profile& profile, TriangleMesh& mesh) {
+  RevolvedGrid(const MugParameters& mug, const Profile& profile, TriangleMesh& mesh) {
+    SurfaceNoise noise(mug);
     const std::size_t n = profile.points.size();
     first_.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
@@ -170,7 +241,8 @@ class RevolvedGrid {
       }
       for (int j = 0; j < kSegments; ++j) {
         const double theta = 2.0 * kPi * j / kSegments;
-        mesh.vertices.emplace_back(q.x() * std::cos(theta), q.x() * std::sin(theta), q.y());
+        const double r = q.x() + noise.next(theta, q.y(), q.x());
+        mesh.vertices.emplace_back(r * std::cos(theta), r * std::sin(theta), q.y());
       }
     }
   }
@@ -326,35 +398,114 @@ void validate(const MugParameters& mug) {
   }
 }
 
-MugParameters random_mug_parameters(Rng& rng) {
+namespace {
+
+// The ranges one family draws from (uniform unless noted).
+struct FamilyRanges {
+  double height[2], radius[2], wall[2], base[2], taper, bulge[2];
+  double no_handle;  // probability
+  double round_section, round_thickness[2], flat_thickness[2], flat_ratio[2], max_width;
+  double clearance[2], low[2], min_span, high_floor, high_ceiling;
+  double flare_probability, flare[2], flare_height[2];
+  double rough_probability, roughness[2];
+};
+
+// mugs-v1 / mugs-v2: the draws and their order must not change, or those presets change.
+FamilyRanges classic_ranges() {
+  FamilyRanges f{};
+  f.height[0] = 0.07, f.height[1] = 0.13;
+  f.radius[0] = 0.032, f.radius[1] = 0.052;
+  f.wall[0] = 0.0025, f.wall[1] = 0.006;
+  f.base[0] = 0.003, f.base[1] = 0.01;
+  f.taper = 0.25;
+  f.bulge[0] = 0.05, f.bulge[1] = 0.15;
+  f.no_handle = 0.06;
+  f.round_section = 0.6;
+  f.round_thickness[0] = 0.006, f.round_thickness[1] = 0.015;
+  f.flat_thickness[0] = 0.006, f.flat_thickness[1] = 0.009;
+  f.flat_ratio[0] = 1.6, f.flat_ratio[1] = 2.4;
+  f.max_width = 0.02;
+  f.clearance[0] = 0.015, f.clearance[1] = 0.035;
+  f.low[0] = 0.15, f.low[1] = 0.45;
+  f.min_span = 0.3, f.high_floor = 0.55, f.high_ceiling = 0.9;
+  return f;  // no flares, smooth
+}
+
+// mugs-v3. Handles that do not fit are redrawn with the whole mug, so the drawn 12 % without a
+// handle end up about 21 % of the mugs, and the 30 % flared about 20 %.
+FamilyRanges varied_ranges() {
+  FamilyRanges f = classic_ranges();
+  f.height[0] = 0.05, f.height[1] = 0.16;
+  f.radius[0] = 0.026, f.radius[1] = 0.058;
+  f.wall[0] = 0.0015, f.wall[1] = 0.008;
+  f.base[0] = 0.003, f.base[1] = 0.02;
+  f.taper = 0.35;
+  f.bulge[0] = 0.03, f.bulge[1] = 0.2;
+  f.no_handle = 0.12;
+  f.round_section = 0.55;
+  f.round_thickness[0] = 0.005, f.round_thickness[1] = 0.018;
+  f.flat_thickness[0] = 0.005, f.flat_thickness[1] = 0.01;
+  f.flat_ratio[0] = 1.4, f.flat_ratio[1] = 2.8;
+  f.max_width = 0.025;
+  f.clearance[0] = 0.008, f.clearance[1] = 0.04;
+  f.low[0] = 0.08, f.low[1] = 0.5;
+  f.min_span = 0.25, f.high_floor = 0.45, f.high_ceiling = 0.95;
+  f.flare_probability = 0.3;
+  f.flare[0] = 0.0015, f.flare[1] = 0.008;
+  f.flare_height[0] = 0.08, f.flare_height[1] = 0.3;
+  f.rough_probability = 0.35;
+  f.roughness[0] = 0.0002, f.roughness[1] = 0.0012;
+  return f;
+}
+
+MugParameters draw(Rng& rng, const FamilyRanges& f) {
+  const auto pick = [&](const double(&range)[2]) { return rng.uniform(range[0], range[1]); };
+  MugParameters mug;
+  mug.height = pick(f.height);
+  mug.outer_radius = pick(f.radius);
+  mug.wall = pick(f.wall);
+  mug.base = pick(f.base);
+  mug.body = static_cast<MugBody>(rng.index(4));
+  mug.body_amount = mug.body == MugBody::straight  ? 0.0
+                    : mug.body == MugBody::tapered ? rng.uniform(-f.taper, f.taper)
+                                                   : pick(f.bulge);
+  mug.rim = rng.uniform() < 0.5 ? MugRim::flat : MugRim::rounded;
+  if (rng.uniform() < f.no_handle) {
+    mug.handle = MugHandle::none;
+  } else {
+    mug.handle = rng.uniform() < 0.5 ? MugHandle::c_shape : MugHandle::d_loop;
+  }
+  mug.section = rng.uniform() < f.round_section ? HandleSection::round : HandleSection::flat;
+  if (mug.section == HandleSection::round) {
+    mug.handle_thickness = pick(f.round_thickness);
+    mug.handle_width = mug.handle_thickness;
+  } else {
+    mug.handle_thickness = pick(f.flat_thickness);
+    mug.handle_width = std::min(f.max_width, mug.handle_thickness * pick(f.flat_ratio));
+  }
+  mug.handle_clearance = pick(f.clearance);
+  mug.handle_low = pick(f.low);
+  mug.handle_high =
+      rng.uniform(std::max(mug.handle_low + f.min_span, f.high_floor), f.high_ceiling);
+  // Drawn only by families that have them, so the classic family's stream is unchanged.
+  if (f.flare_probability > 0.0 && rng.uniform() < f.flare_probability) {
+    mug.flare = pick(f.flare);
+    mug.flare_height = pick(f.flare_height);
+  }
+  if (f.rough_probability > 0.0 && rng.uniform() < f.rough_probability) {
+    mug.roughness = std::min(pick(f.roughness), 0.25 * mug.wall);
+    mug.roughness_seed = rng.next_u64();
+  }
+  return mug;
+}
+
+}  // namespace
+
+MugParameters random_mug_parameters(Rng& rng, MugFamily family) {
+  const FamilyRanges ranges = family == MugFamily::classic ? classic_ranges() : varied_ranges();
   for (;;) {
-    MugParameters mug;
-    mug.height = rng.uniform(0.07, 0.13);
-    mug.outer_radius = rng.uniform(0.032, 0.052);
-    mug.wall = rng.uniform(0.0025, 0.006);
-    mug.base = rng.uniform(0.003, 0.01);
-    mug.body = static_cast<MugBody>(rng.index(4));
-    mug.body_amount = mug.body == MugBody::straight  ? 0.0
-                      : mug.body == MugBody::tapered ? rng.uniform(-0.25, 0.25)
-                                                     : rng.uniform(0.05, 0.15);
-    mug.rim = rng.uniform() < 0.5 ? MugRim::flat : MugRim::rounded;
-    if (rng.uniform() < kNoHandleProbability) {
-      mug.handle = MugHandle::none;
-    } else {
-      mug.handle = rng.uniform() < 0.5 ? MugHandle::c_shape : MugHandle::d_loop;
-    }
-    mug.section = rng.uniform() < 0.6 ? HandleSection::round : HandleSection::flat;
-    if (mug.section == HandleSection::round) {
-      mug.handle_thickness = rng.uniform(0.006, 0.015);
-      mug.handle_width = mug.handle_thickness;
-    } else {
-      mug.handle_thickness = rng.uniform(0.006, 0.009);
-      mug.handle_width = std::min(0.02, mug.handle_thickness * rng.uniform(1.6, 2.4));
-    }
-    mug.handle_clearance = rng.uniform(0.015, 0.035);
-    mug.handle_low = rng.uniform(0.15, 0.45);
-    mug.handle_high = rng.uniform(std::max(mug.handle_low + 0.3, 0.55), 0.9);
     // Redraw the rare combinations that do not fit (e.g. a thick handle on a short span).
+    MugParameters mug = draw(rng, ranges);
     if (problem(mug).empty()) return mug;
   }
 }
@@ -363,7 +514,7 @@ TriangleMesh mug_mesh(const MugParameters& mug) {
   validate(mug);
   const Profile profile = make_profile(mug);
   TriangleMesh mesh;
-  const RevolvedGrid grid(profile, mesh);
+  const RevolvedGrid grid(mug, profile, mesh);
   std::vector<Footprint> footprints;
   if (mug.handle != MugHandle::none) {
     const double z_low = mug.handle_low * mug.height, z_high = mug.handle_high * mug.height;
@@ -423,6 +574,16 @@ std::string to_string(MugHandle handle) {
 
 std::string to_string(HandleSection section) {
   return section == HandleSection::round ? "round" : "flat";
+}
+
+std::string to_string(MugFamily family) {
+  return family == MugFamily::classic ? "classic" : "varied";
+}
+
+MugFamily mug_family_from_string(const std::string& name) {
+  if (name == "classic") return MugFamily::classic;
+  if (name == "varied") return MugFamily::varied;
+  throw Error("unknown mug family '" + name + "' (choose classic or varied)");
 }
 
 }  // namespace graspecmf::geometry

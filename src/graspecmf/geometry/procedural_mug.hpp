@@ -3,6 +3,7 @@
 // mesh for them (a surface of revolution with a handle tube stitched into holes in the outer wall,
 // so the mesh is one closed manifold without self-intersections).
 
+#include <cstdint>
 #include <string>
 
 #include "graspecmf/core/random.hpp"
@@ -33,12 +34,25 @@ struct MugParameters {
   double handle_clearance = 0.025;  // gap between the wall and the handle's inner side
   double handle_low = 0.25;         // lower attachment height, fraction of height
   double handle_high = 0.8;         // upper attachment height, fraction of height
+  // A flared lip: over the top flare_height (fraction of height) the radius grows smoothly
+  // (quadratically) by up to flare metres, inside and out. 0 = no flare.
+  double flare = 0.0;
+  double flare_height = 0.0;
+  // An uneven, modelled or scanned-looking surface: every wall vertex moves radially by up to
+  // about this many metres (smooth dents plus fine per-vertex jitter, seeded). 0 = smooth.
+  double roughness = 0.0;
+  std::uint64_t roughness_seed = 0;
 };
 
-// Parameters drawn from the ranges of real mugs: height 7–13 cm, outer radius 3.2–5.2 cm, wall
-// 2.5–6 mm, base 3–10 mm, all body and rim kinds, handles (6 % none) attached within 15–90 % of
-// the height with thickness 6–15 mm and clearance 1.5–3.5 cm. Always valid for mug_mesh.
-MugParameters random_mug_parameters(Rng& rng);
+// The procedural families: `classic` (the mugs-v1 / mugs-v2 presets) and `varied` (wider sizes,
+// flared lips, uneven surfaces, more cups without handles; the mugs-v3 preset).
+enum class MugFamily { classic, varied };
+
+// Parameters drawn from the family's ranges (docs/dataset.md). classic: height 7–13 cm, outer
+// radius 3.2–5.2 cm, wall 2.5–6 mm, base 3–10 mm, all body and rim kinds, handles (6 % none)
+// attached within 15–90 % of the height, thickness 6–15 mm, clearance 1.5–3.5 cm, no flare, smooth.
+// Always valid for mug_mesh.
+MugParameters random_mug_parameters(Rng& rng, MugFamily family = MugFamily::classic);
 // Throws Error naming the first parameter that is out of range or geometrically inconsistent
 // (e.g. a wall thicker than the radius, or a handle that does not fit between base and rim).
 void validate(const MugParameters& mug);
@@ -50,5 +64,8 @@ std::string to_string(MugBody body);
 std::string to_string(MugRim rim);
 std::string to_string(MugHandle handle);
 std::string to_string(HandleSection section);
+std::string to_string(MugFamily family);
+// The family named `name` ("classic" or "varied"); throws Error naming the choices otherwise.
+MugFamily mug_family_from_string(const std::string& name);
 
 }  // namespace graspecmf::geometry
