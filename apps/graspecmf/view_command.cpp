@@ -11,12 +11,13 @@
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/viz/html_view.hpp"
+#include "graspecmf/viz/scene_sheet.hpp"
 
 namespace graspecmf::apps {
 namespace {
 
 struct ViewArgs {
-  std::string grasp_file, mesh_root, out;
+  std::string grasp_file, mesh_root, out, png;
   std::size_t max = 200;
   bool successful_only = false;
 };
@@ -24,6 +25,9 @@ struct ViewArgs {
 constexpr std::array<int, 3> kSuccess{40, 160, 60}, kFailure{200, 50, 50}, kUnlabelled{40, 90, 200};
 
 void run(const ViewArgs& a) {
+  if (a.out.empty() && a.png.empty()) {
+    throw Error("view: nothing to write; give --out FILE.html, --png FILE.png or both");
+  }
   const data::AcronymGraspFile record = data::read_acronym_file(a.grasp_file);
   const geometry::TriangleMesh mesh = geometry::scaled(
       geometry::read_mesh(data::find_object_mesh(a.grasp_file, record.object.file, a.mesh_root)),
@@ -53,20 +57,28 @@ void run(const ViewArgs& a) {
   const std::string title =
       fmt::format("{}: {} of {} grasps", std::filesystem::path(a.grasp_file).filename().string(),
                   shown.size(), record.size());
-  write_text_atomically(a.out, viz::html_view(mesh, segments, title));
-  std::cout << fmt::format("wrote {} ({})\n", a.out, title);
+  if (!a.out.empty()) {
+    write_text_atomically(a.out, viz::html_view(mesh, segments, title));
+    std::cout << fmt::format("wrote {} ({})\n", a.out, title);
+  }
+  if (!a.png.empty()) {
+    viz::write_png(viz::scene_sheet(mesh, segments), a.png);
+    std::cout << fmt::format("wrote {} ({})\n", a.png, title);
+  }
 }
 
 }  // namespace
 
 void add_view_command(CLI::App& app) {
   auto a = std::make_shared<ViewArgs>();
-  CLI::App* cmd = app.add_subcommand("view", "Write an interactive 3-D HTML view of a grasp file");
+  CLI::App* cmd = app.add_subcommand(
+      "view", "Write an interactive 3-D HTML view and/or a PNG contact sheet of a grasp file");
   cmd->add_option("file", a->grasp_file, "ACRONYM grasp file (.h5)")->required();
   cmd->add_option("--mesh-root", a->mesh_root, "Folder the file's object/file is relative to");
   cmd->add_option("--max", a->max, "Show at most this many grasps")->check(CLI::Range(1, 100000));
   cmd->add_flag("--successful-only", a->successful_only, "Show only successful grasps");
-  cmd->add_option("--out", a->out, "Output .html")->required();
+  cmd->add_option("--out", a->out, "Output .html (interactive view)");
+  cmd->add_option("--png", a->png, "Output .png (contact sheet of six views)");
   cmd->callback([a] { run(*a); });
 }
 

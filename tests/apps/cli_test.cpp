@@ -232,6 +232,40 @@ TEST(CliView, WritesAnHtmlPageOfTheSampleGrasps) {
                         "missing.h5");
 }
 
+// The width and height in a PNG file's header, or {0, 0} if it is not a PNG.
+std::array<int, 2> png_size(const fs::path& path) {
+  const std::string bytes = read_file(path);
+  if (bytes.size() < 24 || bytes.compare(0, 8, "\x89PNG\r\n\x1a\n") != 0) return {0, 0};
+  auto big_endian = [&](std::size_t at) {
+    int value = 0;
+    for (std::size_t k = 0; k < 4; ++k)
+      value = value * 256 + static_cast<unsigned char>(bytes[at + k]);
+    return value;
+  };
+  return {big_endian(16), big_endian(20)};
+}
+
+TEST(CliView, WritesAPngContactSheetAloneOrWithThePage) {
+  ScratchDir dir;
+  const std::string grasps = sample_grasp_file().string();
+  const fs::path png = dir / "sheet.png", html = dir / "view.html";
+  const CliRun alone = run("view " + grasps + " --max 20 --png " + png.string(), dir);
+  ASSERT_EQ(alone.exit_code, 0) << alone.err;
+  EXPECT_NE(alone.out.find("wrote " + png.string()), std::string::npos) << alone.out;
+  // Six 320-pixel views in 3 columns and 2 rows with 4-pixel gutters.
+  EXPECT_EQ(png_size(png), (std::array<int, 2>{3 * 324 + 4, 2 * 324 + 4}));
+  EXPECT_EQ(dir.num_files(), 1u);  // no temporary file left beside it
+  fs::remove(png);
+  const CliRun both =
+      run("view " + grasps + " --max 20 --png " + png.string() + " --out " + html.string(), dir);
+  ASSERT_EQ(both.exit_code, 0) << both.err;
+  EXPECT_NE(png_size(png)[0], 0);
+  EXPECT_NE(read_file(html).find("<canvas"), std::string::npos);
+  expect_one_error_line(run("view " + grasps, dir), "--png");
+  expect_one_error_line(run("view " + grasps + " --png " + (dir / "no/such/dir.png").string(), dir),
+                        "dir.png");
+}
+
 TEST(CliMakeDataset, MakesAndResumesASmallMugDataset) {
   ScratchDir dir;
   const std::string args = "make-dataset --mugs 1 --seed 5 --grasps 4 --threads 1 --out " +

@@ -2,18 +2,13 @@
 // A self-contained interactive 3-D view (one HTML file, no external scripts): a shaded mesh and
 // coloured line segments, e.g. gripper markers of grasps. Drag to rotate, wheel to zoom.
 
-#include <array>
 #include <string>
 #include <vector>
 
 #include "graspecmf/geometry/triangle_mesh.hpp"
+#include "graspecmf/viz/segment.hpp"
 
 namespace graspecmf::viz {
-
-struct Segment {
-  geometry::Vec3 a, b;
-  std::array<int, 3> rgb;  // 0–255
-};
 
 // The page's HTML; the scene is embedded as JSON in <script id="scene">, metres. Throws Error for a
 // mesh without triangles or a non-finite coordinate.

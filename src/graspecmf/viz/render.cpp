@@ -12,9 +12,11 @@
 namespace graspecmf::viz {
 namespace {
 
-constexpr double kMargin = 0.05;
 constexpr double kAmbient = 0.25;
 constexpr int kGutter = 4;
+// A segment wins the depth test against a surface up to this many pixels behind it, so that lines
+// lying on the surface stay visible.
+constexpr double kSegmentDepthBias = 2.0;
 
 Image blank(int width, int height) {
   Image image;
@@ -24,50 +26,19 @@ Image blank(int width, int height) {
   return image;
 }
 
-}  // namespace
+// A square image with a depth buffer; points are (column, row, depth) as Projection gives them.
+class Canvas {
+ public:
+  explicit Canvas(int size)
+      : image_(blank(size, size)),
+        depth_(static_cast<std::size_t>(size) * static_cast<std::size_t>(size),
+               std::numeric_limits<double>::infinity()) {}
 
-Image render_mesh(const geometry::TriangleMesh& mesh, const ViewOptions& options) {
-  if (mesh.triangles.empty()) throw Error("render: the mesh has no triangles");
-  if (options.size < 8 || options.size > 4096) throw Error("render: size must be in [8, 4096]");
-  const Vec3 forward = options.direction.normalized();
-  const Vec3 right = forward.cross(options.up);
-  if (!(right.norm() > 1e-9)) throw Error("render: the view direction is parallel to up");
-  const Vec3 screen_x = right.normalized();
-  const Vec3 screen_y = screen_x.cross(forward);
-  // Light from above-left of the camera.
-  const Vec3 light = (-forward + 0.5 * screen_y - 0.3 * screen_x).normalized();
-
-  std::vector<Eigen::Vector3d> projected;  // pixel x, pixel y, depth
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector2d hi = -lo;
-  for (const Vec3& v : mesh.vertices) {
-    const Eigen::Vector2d p(v.dot(screen_x), v.dot(screen_y));
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-    projected.emplace_back(p.x(), p.y(), v.dot(forward));
-  }
-  const int n = options.size;
-  const double extent = std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1e-12});
-  const double scale = n * (1.0 - 2.0 * kMargin) / extent;
-  const Eigen::Vector2d center = 0.5 * (lo + hi);
-  for (Eigen::Vector3d& p : projected) {
-    p.x() = 0.5 * n + (p.x() - center.x()) * scale;
-    p.y() = 0.5 * n - (p.y() - center.y()) * scale;  // image rows grow downwards
-  }
-
-  Image image = blank(n, n);
-  std::vector<double> depth(static_cast<std::size_t>(n) * static_cast<std::size_t>(n),
-                            std::numeric_limits<double>::infinity());
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    const Vec3 normal = geometry::triangle_normal(mesh, t);
-    if (normal.isZero()) continue;
-    const double shade = kAmbient + (1.0 - kAmbient) * std::abs(normal.dot(light));
-    const auto& tri = mesh.triangles[t];
-    const Eigen::Vector3d& a = projected[tri[0]];
-    const Eigen::Vector3d& b = projected[tri[1]];
-    const Eigen::Vector3d& c = projected[tri[2]];
+  // Colours the pixels whose centres lie in the triangle abc where it is the nearest so far.
+  void fill_triangle(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& rgb) {
     const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-    if (std::abs(area) < 1e-12) continue;
+    if (std::abs(area) < 1e-12) return;
+    const int n = image_.width;
     const int x0 = std::max(0, static_cast<int>(std::floor(std::min({a.x(), b.x(), c.x()}))));
     const int x1 = std::min(n - 1, static_cast<int>(std::ceil(std::max({a.x(), b.x(), c.x()}))));
     const int y0 = std::max(0, static_cast<int>(std::floor(std::min({a.y(), b.y(), c.y()}))));
@@ -79,19 +50,86 @@ Image render_mesh(const geometry::TriangleMesh& mesh, const ViewOptions& options
         const double wb = ((c.x() - px) * (a.y() - py) - (c.y() - py) * (a.x() - px)) / area;
         const double wc = 1.0 - wa - wb;
         if (wa < 0 || wb < 0 || wc < 0) continue;
-        const double z = wa * a.z() + wb * b.z() + wc * c.z();
-        const std::size_t pixel =
-            static_cast<std::size_t>(y) * static_cast<std::size_t>(n) + static_cast<std::size_t>(x);
-        if (z >= depth[pixel]) continue;
-        depth[pixel] = z;
-        for (int k = 0; k < 3; ++k) {
-          image.rgb[3 * pixel + static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(
-              std::lround(255.0 * std::clamp(options.color[k] * shade, 0.0, 1.0)));
+        plot(x, y, wa * a.z() + wb * b.z() + wc * c.z(), rgb);
+      }
+    }
+  }
+
+  // A line `width` pixels wide from a to b (depths interpolated), drawn where it is the nearest so
+  // far or less than `bias` behind.
+  void draw_line(const Vec3& a, const Vec3& b, int width, double bias, const Vec3& rgb) {
+    const double length = std::max(std::abs(b.x() - a.x()), std::abs(b.y() - a.y()));
+    const int steps = static_cast<int>(std::ceil(2.0 * length)) + 1;  // ≤ half a pixel apart
+    for (int k = 0; k <= steps; ++k) {
+      const Vec3 p = a + (b - a) * (static_cast<double>(k) / steps);
+      const int x0 = static_cast<int>(std::floor(p.x() - 0.5 * width));
+      const int y0 = static_cast<int>(std::floor(p.y() - 0.5 * width));
+      for (int y = std::max(0, y0); y < std::min(image_.height, y0 + width); ++y) {
+        for (int x = std::max(0, x0); x < std::min(image_.width, x0 + width); ++x) {
+          plot(x, y, p.z() - bias, rgb);
         }
       }
     }
   }
-  return image;
+
+  const Image& image() const { return image_; }
+
+ private:
+  // Sets pixel (x, y) to rgb (components in [0, 1]) if depth is nearer than what it shows.
+  void plot(int x, int y, double depth, const Vec3& rgb) {
+    const std::size_t pixel = static_cast<std::size_t>(y) * static_cast<std::size_t>(image_.width) +
+                              static_cast<std::size_t>(x);
+    if (depth >= depth_[pixel]) return;
+    depth_[pixel] = depth;
+    for (int k = 0; k < 3; ++k) {
+      image_.rgb[3 * pixel + static_cast<std::size_t>(k)] =
+          static_cast<std::uint8_t>(std::lround(255.0 * std::clamp(rgb[k], 0.0, 1.0)));
+    }
+  }
+
+  Image image_;
+  std::vector<double> depth_;
+};
+
+}  // namespace
+
+Image render_mesh(const geometry::TriangleMesh& mesh, const ViewOptions& options) {
+  return render_scene(mesh, {}, options);
+}
+
+Image render_scene(const geometry::TriangleMesh& mesh, const std::vector<Segment>& segments,
+                   const ViewOptions& options) {
+  if (mesh.triangles.empty()) throw Error("render: the mesh has no triangles");
+  if (options.line_width < 1 || options.line_width > 16) {
+    throw Error("render: the line width must be in [1, 16]");
+  }
+  std::vector<Vec3> fit = mesh.vertices;
+  for (const Segment& s : segments) {
+    fit.push_back(s.a);
+    fit.push_back(s.b);
+  }
+  const Projection project(fit, options.size, options.direction, options.up);
+  // Light from above-left of the camera.
+  const Vec3 light = (-project.forward() + 0.5 * project.up() - 0.3 * project.right()).normalized();
+  std::vector<Vec3> projected;
+  projected.reserve(mesh.vertices.size());
+  for (const Vec3& v : mesh.vertices) projected.push_back(project(v));
+
+  Canvas canvas(options.size);
+  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
+    const Vec3 normal = geometry::triangle_normal(mesh, t);
+    if (normal.isZero()) continue;
+    const double shade = kAmbient + (1.0 - kAmbient) * std::abs(normal.dot(light));
+    const auto& tri = mesh.triangles[t];
+    canvas.fill_triangle(projected[tri[0]], projected[tri[1]], projected[tri[2]],
+                         options.color * shade);
+  }
+  const double bias = kSegmentDepthBias / project.scale();
+  for (const Segment& s : segments) {
+    const Vec3 rgb = Eigen::Vector3i(s.rgb[0], s.rgb[1], s.rgb[2]).cast<double>() / 255.0;
+    canvas.draw_line(project(s.a), project(s.b), options.line_width, bias, rgb);
+  }
+  return canvas.image();
 }
 
 Image contact_sheet(const std::vector<Image>& images, int columns) {
