@@ -13,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "bundled_model.hpp"
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/progress.hpp"
@@ -115,6 +116,13 @@ void add_device_option(CLI::App* cmd, std::string& device) {
 void add_filter_flags(CLI::App* cmd, gripper::GraspChecks& checks, const std::string& whose,
                       const std::string& points) {
   cmd->add_flag(
+      "--refine", checks.refine,
+      fmt::format("Move each of {} whose open hand holds any of {} back along its approach "
+                  "axis (≤ {:g} cm) and sideways along its closing axis (≤ {:g} cm) by "
+                  "the least step of a {:g} mm grid that frees it; not in the paper",
+                  whose, points, 100 * gripper::kRefineMaxRetreat,
+                  100 * gripper::kRefineMaxSideShift, 1000 * gripper::kRefineStep));
+  cmd->add_flag(
       "--reject-collisions", checks.collisions,
       "Keep only " + whose + " whose open hand holds none of " + points + "; not in the paper");
   cmd->add_flag("--reject-shallow", checks.shallow,
@@ -123,13 +131,15 @@ void add_filter_flags(CLI::App* cmd, gripper::GraspChecks& checks, const std::st
                             whose, points, 100 * gripper::kMinGraspDepth));
 }
 
-// The filter in a one-line summary: "", or e.g. ", colliding and shallow grasps rejected".
+// The filter in a one-line summary: "", or e.g. ", refined, colliding and shallow grasps
+// rejected".
 std::string filter_note(const gripper::GraspChecks& checks) {
-  if (!checks.any()) return "";
-  return fmt::format(", {} grasps rejected", checks.collisions && checks.shallow
-                                                 ? "colliding and shallow"
-                                             : checks.collisions ? "colliding"
-                                                                 : "shallow");
+  const std::string refined = checks.refine ? ", refined" : "";
+  if (!checks.rejects()) return refined;
+  return fmt::format("{}, {} grasps rejected", refined,
+                     checks.collisions && checks.shallow ? "colliding and shallow"
+                     : checks.collisions                 ? "colliding"
+                                                         : "shallow");
 }
 
 // ---- sample ----
@@ -194,7 +204,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
 void run_sample(const SampleArgs& a) {
   at::set_num_threads(a.threads);
   const train::TrainedModel trained =
-      train::load_trained_model(a.model, train::parse_device(a.device));
+      train::load_trained_model(model_or_bundled(a.model), train::parse_device(a.device));
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   const auto clouds = static_cast<std::size_t>(settings.clouds);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
@@ -320,8 +330,9 @@ nlohmann::json comparison_json(const metrics::PairedComparison& c) {
 
 void run_evaluate(const EvaluateArgs& a) {
   at::set_num_threads(a.threads);
+  const std::string model = model_or_bundled(a.model).string();
   const train::TrainedModel trained =
-      train::load_trained_model(a.model, train::parse_device(a.device));
+      train::load_trained_model(model, train::parse_device(a.device));
   const std::vector<data::GraspObject> objects = evaluation_objects(a);
   std::vector<data::GraspObject> training;
   std::optional<train::TrainingShapes> shapes;
@@ -417,7 +428,7 @@ void run_evaluate(const EvaluateArgs& a) {
   }
   progress.finish();
   const double count = static_cast<double>(objects.size());
-  json report = {{"model", a.model},
+  json report = {{"model", model},
                  {"step", trained.step},
                  {"sampling",
                   {{"solver", settings.solver},
@@ -487,7 +498,7 @@ void run_evaluate(const EvaluateArgs& a) {
   if (!a.out.empty()) write_text_atomically(a.out, report.dump(1) + "\n");
   if (!a.markdown.empty()) {
     write_text_atomically(
-        a.markdown, fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", a.model,
+        a.markdown, fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", model,
                                 trained.step, settings.solver, settings.steps, settings.guidance,
                                 filter_note(a.checks), table, summary));
   }
@@ -508,9 +519,21 @@ void add_model_commands(CLI::App& app) {
   add_device_option(train_cmd, t->device);
   train_cmd->callback([t] { run_train(*t); });
 
+  auto x = std::make_shared<std::pair<std::string, std::string>>();
+  CLI::App* export_cmd = app.add_subcommand(
+      "export-model",
+      "Write a run's inference model: config.json and float32 weights, no optimiser");
+  export_cmd->add_option("--model", x->first, "Run folder of a trained model")->required();
+  export_cmd->add_option("--out", x->second, "Output folder (config.json, model.pt)")->required();
+  export_cmd->callback([x] {
+    const std::int64_t step = train::export_model(x->first, x->second);
+    std::cout << fmt::format("exported step {} of {} → {}\n", step, x->first, x->second);
+  });
+
   auto s = std::make_shared<SampleArgs>();
   CLI::App* sample_cmd = app.add_subcommand("sample", "Generate grasps for an object");
-  sample_cmd->add_option("--model", s->model, "Run folder of a trained model")->required();
+  sample_cmd->add_option("--model", s->model,
+                         "Trained run or exported model folder (default: the bundled mugs model)");
   sample_cmd->add_option("--mesh", s->mesh, "Object mesh (.obj/.stl/.ply)");
   sample_cmd->add_option("--points", s->points, "Point cloud (.xyz/.txt/.npy/.ply)");
   s->units.add_options(sample_cmd);
@@ -529,7 +552,8 @@ void add_model_commands(CLI::App& app) {
 
   auto e = std::make_shared<EvaluateArgs>();
   CLI::App* eval_cmd = app.add_subcommand("evaluate", "EMD of a trained model against real grasps");
-  eval_cmd->add_option("--model", e->model, "Run folder of a trained model")->required();
+  eval_cmd->add_option("--model", e->model,
+                       "Trained run or exported model folder (default: the bundled mugs model)");
   eval_cmd->add_option("--data", e->data, "Dataset folder with splits.json");
   eval_cmd->add_option("--split", e->split, "train, val or test");
   eval_cmd->add_option("--acronym", e->acronym, "A single ACRONYM grasp file instead");

@@ -49,6 +49,33 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_EQ(record.size(), 7u);
   EXPECT_EQ(record.object.file, (data / "meshes/Box/b0.obj").string());
 
+  // An exported model (float32 weights, no optimiser) gives the run's grasps bit for bit.
+  const std::string exported = (dir / "exported").string();
+  const auto export_run = run("export-model --model " + run_dir + " --out " + exported, dir);
+  ASSERT_EQ(export_run.exit_code, 0) << export_run.err;
+  EXPECT_TRUE(fs::exists(dir / "exported/model.pt"));
+  EXPECT_LT(fs::file_size(dir / "exported/model.pt"), fs::file_size(dir / "run/checkpoint.pt"));
+  const std::string out_exported = (dir / "grasps-exported.h5").string();
+  ASSERT_EQ(run("sample --model " + exported + " --mesh " + (data / "meshes/Box/b0.obj").string() +
+                    " --num 7 --device cpu --out " + out_exported,
+                dir)
+                .exit_code,
+            0);
+  EXPECT_EQ(graspecmf::data::read_acronym_file(out_exported).transforms, record.transforms);
+  expect_one_error_line(
+      run("export-model --model " + (dir / "nowhere").string() + " --out " + (dir / "x").string(),
+          dir),
+      "no config.json");
+
+  // --refine: grasps move, none is dropped, and the note says so.
+  const auto refined_run =
+      run("sample --model " + run_dir + " --mesh " + (data / "meshes/Box/b0.obj").string() +
+              " --num 7 --seed 3 --refine --out " + out,
+          dir);
+  ASSERT_EQ(refined_run.exit_code, 0) << refined_run.err;
+  EXPECT_NE(refined_run.out.find(", refined"), std::string::npos) << refined_run.out;
+  EXPECT_EQ(graspecmf::data::read_acronym_file(out).size(), 7u);
+
   // --reject-collisions: every grasp's open hand is clear of the dense surface sample it checks.
   const auto clear_run =
       run("sample --model " + run_dir + " --mesh " + (data / "meshes/Box/b0.obj").string() +

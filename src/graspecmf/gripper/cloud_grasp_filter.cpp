@@ -1,6 +1,7 @@
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -83,9 +84,37 @@ double CloudGraspFilter::depth(const lie::Pose& grasp) const {
 }
 
 bool CloudGraspFilter::keeps(const lie::Pose& grasp) const {
+  if (!checks_.rejects()) return true;
   if (!checks_.shallow) return !in_collision(grasp);
   const std::optional<double> reach = scan_depth(grasp, checks_.collisions);
   return reach && *reach >= kMinGraspDepth;
+}
+
+lie::Pose CloudGraspFilter::refined(const lie::Pose& grasp) const {
+  if (!in_collision(grasp)) return grasp;
+  // The grid's displacements (gripper frame), smallest first; ties keep the grid order.
+  static const std::vector<Vec3> kDisplacements = [] {
+    std::vector<Vec3> grid;
+    const int back = static_cast<int>(std::lround(kRefineMaxRetreat / kRefineStep));
+    const int side = static_cast<int>(std::lround(kRefineMaxSideShift / kRefineStep));
+    for (int k = 0; k <= back; ++k) {
+      for (int i = -side; i <= side; ++i) {
+        if (k != 0 || i != 0) grid.emplace_back(i * kRefineStep, 0.0, -k * kRefineStep);
+      }
+    }
+    std::stable_sort(grid.begin(), grid.end(),
+                     [](const Vec3& a, const Vec3& b) { return a.norm() < b.norm(); });
+    return grid;
+  }();
+  std::optional<lie::Pose> first_free;
+  for (const Vec3& d : kDisplacements) {
+    const lie::Pose moved{grasp.R, grasp.p + grasp.R * d};
+    const std::optional<double> reach = scan_depth(moved, true);
+    if (!reach) continue;
+    if (*reach >= kMinGraspDepth) return moved;
+    if (!first_free) first_free = moved;
+  }
+  return first_free ? *first_free : grasp;
 }
 
 }  // namespace graspecmf::gripper

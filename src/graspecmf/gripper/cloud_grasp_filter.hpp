@@ -26,11 +26,19 @@ inline constexpr double kMinGraspDepth = 0.01;
 // area-weighted surface samples, drawn apart from a model input cloud of the same seed.
 std::vector<Vec3> filter_cloud(const geometry::TriangleMesh& mesh, std::uint64_t seed);
 
+// The search of CloudGraspFilter::refined: displacements of a colliding grasp in its own frame,
+// backwards along the approach axis (z) and either way along the closing axis (x), on a grid.
+inline constexpr double kRefineStep = 0.0025;        // m between grid displacements
+inline constexpr double kRefineMaxRetreat = 0.02;    // m, along −z
+inline constexpr double kRefineMaxSideShift = 0.01;  // m, along ±x
+
 // Which checks a CloudGraspFilter applies.
 struct GraspChecks {
   bool collisions = false;  // reject a grasp whose open hand holds a point
   bool shallow = false;     // reject a grasp whose object reaches less than kMinGraspDepth in
-  bool any() const { return collisions || shallow; }
+  bool refine = false;      // first move a grasp whose open hand holds a point (see refined)
+  bool rejects() const { return collisions || shallow; }
+  bool any() const { return refine || rejects(); }
 };
 
 class CloudGraspFilter {
@@ -46,8 +54,15 @@ class CloudGraspFilter {
   // approach-axis coordinate of a point between the open fingers (within the fingers' width, from
   // the finger bases to the tips); 0 when no point is there.
   double depth(const lie::Pose& grasp) const;
-  // True if the grasp passes every check asked for (one pass over the cloud).
+  // True if refinement was asked for (GraspChecks::refine).
+  bool refines() const { return checks_.refine; }
+  // True if the grasp passes every rejection check asked for (one pass over the cloud).
   bool keeps(const lie::Pose& grasp) const;
+  // The grasp itself when its open hand holds no point. Otherwise the grasp moved by the smallest
+  // displacement of the search grid (kRefine*) that frees the hand with the object still
+  // kMinGraspDepth between the fingers, else the smallest that frees it, else the grasp unchanged.
+  // Not in the paper; equivariant, since the search is in the grasp's own frame.
+  lie::Pose refined(const lie::Pose& grasp) const;
 
  private:
   // True if x (gripper frame) lies in a collision box.

@@ -35,6 +35,29 @@ void read_module(torch::serialize::InputArchive& archive, const std::string& key
   }
 }
 
+// Writes the archive to path atomically, naming the path in any error.
+void save_archive(torch::serialize::OutputArchive& archive, const fs::path& path) {
+  write_atomically(path, [&](const fs::path& tmp) {
+    try {
+      archive.save_to(tmp.string());
+    } catch (const c10::Error& e) {
+      throw Error(path.string() + ": cannot write " + e.what_without_backtrace());
+    }
+  });
+}
+
+// The archive at path, its tensors on device; throws Error if the file is missing or unreadable.
+torch::serialize::InputArchive load_archive(const fs::path& path, c10::Device device) {
+  if (!fs::exists(path)) throw Error(path.string() + ": no such file");
+  torch::serialize::InputArchive archive;
+  try {
+    archive.load_from(path.string(), device);
+  } catch (const c10::Error& e) {
+    throw Error(path.string() + ": unreadable or damaged (" + e.what_without_backtrace() + ")");
+  }
+  return archive;
+}
+
 }  // namespace
 
 void save_checkpoint(const fs::path& path, const torch::nn::Module& model,
@@ -57,13 +80,7 @@ void save_checkpoint(const fs::path& path, const torch::nn::Module& model,
                                                   {static_cast<int64_t>(s.size())}, torch::kUInt8)
                                      .clone());
   archive.write("generator", state.generator);
-  write_atomically(path, [&](const fs::path& tmp) {
-    try {
-      archive.save_to(tmp.string());
-    } catch (const c10::Error& e) {
-      throw Error(path.string() + ": cannot write checkpoint: " + e.what_without_backtrace());
-    }
-  });
+  save_archive(archive, path);
 }
 
 void load_checkpoint(const fs::path& path, torch::nn::Module& model,
@@ -98,6 +115,34 @@ void load_checkpoint(const fs::path& path, torch::nn::Module& model,
     throw Error(path.string() +
                 ": checkpoint does not match this model configuration or is "
                 "damaged (" +
+                e.what_without_backtrace() + ")");
+  }
+}
+
+void save_weights(const fs::path& path, const torch::nn::Module& model, std::int64_t step) {
+  for (const at::Tensor& t : model.parameters()) {
+    if (!t.device().is_cpu() || t.scalar_type() != torch::kFloat) {
+      throw Error(path.string() + ": weights are written from a float32 model on the CPU");
+    }
+  }
+  torch::serialize::OutputArchive archive, model_archive;
+  model.save(model_archive);
+  archive.write("weights", model_archive);
+  archive.write("step", torch::tensor({step}, torch::kLong));
+  archive.write("tensor_count", torch::tensor({static_cast<int64_t>(layout(model).size())}));
+  save_archive(archive, path);
+}
+
+std::int64_t load_weights(const fs::path& path, torch::nn::Module& model) {
+  torch::serialize::InputArchive archive = load_archive(path, model.parameters().front().device());
+  try {
+    at::Tensor count, step;
+    archive.read("tensor_count", count);
+    archive.read("step", step);
+    read_module(archive, "weights", model, count, path);
+    return step.item<int64_t>();
+  } catch (const c10::Error& e) {
+    throw Error(path.string() + ": not a weights file of this model configuration (" +
                 e.what_without_backtrace() + ")");
   }
 }

@@ -156,6 +156,7 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   for (lie::Pose g : shuffled_grasps(nearest, seed)) {
     if (moved.size() == result.n) break;
     g.p += centroid - neighbour_centroid;
+    if (grasp_filter && grasp_filter->refines()) g = grasp_filter->refined(g);
     if (!grasp_filter || grasp_filter->keeps(g)) moved.push_back(g);
   }
   if (moved.empty()) {

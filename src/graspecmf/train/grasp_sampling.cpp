@@ -110,6 +110,7 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
       grasp.R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
           R.data_ptr<double>() + 9 * g);
       grasp.p = Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g) / scale + centroid;
+      if (filter != nullptr && filter->refines()) grasp = filter->refined(grasp);
       if (filter == nullptr || filter->keeps(grasp)) grasps.push_back(grasp);
     }
   }

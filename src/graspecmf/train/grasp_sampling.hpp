@@ -23,7 +23,8 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
 // position_scale for the encoder; the parts' z are averaged and the grasps placed about the mean
 // centroid. The prior is drawn from seed; grasps are returned as T_object_gripper in the cloud's
 // frame, metres. Runs on the model's device; the prior is drawn on the CPU, so a seed
-// gives the same grasps (to rounding) on every device. With a `filter`, only grasps it keeps are
+// gives the same grasps (to rounding) on every device. A `filter` that refines moves each grasp
+// (CloudGraspFilter::refined) before its checks. With a `filter`, only grasps it keeps are
 // returned: the first round draws n (the grasps of the unfiltered call), later ones the missing
 // count over the kept fraction so far, with a quarter to spare (64 to 64 n grasps), and Error is
 // thrown if fewer than n are kept after kMaxSamplingRounds. Throws Error for an empty or non-finite

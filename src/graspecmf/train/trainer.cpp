@@ -25,6 +25,7 @@ namespace {
 
 constexpr const char* kConfigFile = "config.json";
 constexpr const char* kCheckpointFile = "checkpoint.pt";
+constexpr const char* kWeightsFile = "model.pt";
 constexpr const char* kLogFile = "log.jsonl";
 constexpr std::uint64_t kValidationSeed = 12345;
 
@@ -264,20 +265,35 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
 
 TrainedModel load_trained_model(const fs::path& run_dir, c10::Device device) {
   const fs::path config_file = run_dir / kConfigFile;
-  if (!fs::exists(config_file))
-    throw Error(run_dir.string() + ": not a training run (no config.json)");
+  if (!fs::exists(config_file)) {
+    throw Error(run_dir.string() + ": not a model or training run (no config.json)");
+  }
   TrainedModel trained;
   trained.config = read_train_config(config_file);
   trained.model = nn::GraspFlowModel(trained.config.model);
-  TrainingState state;
-  // With a weight average, the average overwrites the trained weights just loaded.
   nn::GraspFlowModelImpl& module = *trained.model;
-  load_checkpoint(run_dir / kCheckpointFile, module, nullptr, &state,
-                  trained.config.ema_decay > 0 ? &module : nullptr);
-  trained.step = state.step;
+  if (fs::exists(run_dir / kWeightsFile)) {
+    trained.step = load_weights(run_dir / kWeightsFile, module);
+  } else {
+    TrainingState state;
+    // With a weight average, the average overwrites the trained weights just loaded.
+    load_checkpoint(run_dir / kCheckpointFile, module, nullptr, &state,
+                    trained.config.ema_decay > 0 ? &module : nullptr);
+    trained.step = state.step;
+  }
   trained.model->to(device);
   trained.model->eval();
   return trained;
+}
+
+std::int64_t export_model(const fs::path& run_dir, const fs::path& out_dir) {
+  const TrainedModel trained = load_trained_model(run_dir);
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw Error(out_dir.string() + ": cannot create the folder (" + ec.message() + ")");
+  write_text_atomically(out_dir / kConfigFile, to_json(trained.config).dump(2) + "\n");
+  save_weights(out_dir / kWeightsFile, *trained.model, trained.step);
+  return trained.step;
 }
 
 }  // namespace graspecmf::train

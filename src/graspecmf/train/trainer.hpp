@@ -1,6 +1,7 @@
 #pragma once
 // `graspecmf train`: flow-matching training of the GraspECMF model on an ACRONYM-style dataset
-// folder (METHOD.md §5), in a run folder that holds config.json, checkpoint.pt and log.jsonl.
+// folder, in a run folder that holds config.json, checkpoint.pt and log.jsonl; and loading or
+// exporting a trained model.
 // Interrupted runs (even kill -9) resume from the last checkpoint and continue bit for bit.
 
 #include <c10/core/Device.h>
@@ -41,10 +42,17 @@ struct TrainedModel {
   std::int64_t step = 0;
 };
 
-// The run folder's configuration and latest checkpoint (its weight average when ema_decay > 0),
-// the model moved to `device`. Throws Error if either is missing, or the checkpoint does not fit
-// the configuration.
+// A model folder's configuration and weights, the model moved to `device`: a released model
+// (config.json and model.pt, written by export_model) or a training run (config.json and the
+// latest checkpoint, its weight average when ema_decay > 0). Throws Error if either file is
+// missing, or the weights do not fit the configuration.
 TrainedModel load_trained_model(const std::filesystem::path& run_dir,
                                 c10::Device device = c10::Device(c10::kCPU));
+
+// Writes the run's inference model into out_dir (created if needed): config.json and model.pt
+// (the weight average when the run keeps one, float32, no optimiser state). Returns its step.
+// Throws Error if the run cannot be loaded or out_dir cannot be written.
+std::int64_t export_model(const std::filesystem::path& run_dir,
+                          const std::filesystem::path& out_dir);
 
 }  // namespace graspecmf::train
