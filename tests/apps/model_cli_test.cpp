@@ -227,7 +227,7 @@ TEST(CliModel, BadInput) {
   expect_one_error_line(run("sample --model " + (dir / "nowhere").string() + " --points " +
                                 (dir / "nan.xyz").string() + " --out " + (dir / "g.h5").string(),
                             dir),
-                        "not a training run");
+                        "not a model or training run");
   // A checkpoint from a different configuration.
   fs::create_directories(dir / "other");
   std::string wider = kTinyConfig;
