@@ -28,13 +28,13 @@ struct Preset {
   const char* fixed_trial;
   geometry::MugFamily family;
 };
-// mugs-v1: the project's first training set (METHOD.md §8): 130 mugs × 2000 candidates, 100 train /
-// 10 val / 20 test, labelled before the simulator had pad normals and its own convex collider.
-// mugs-v2: the same labelling budget spread over twice the shapes (200 mugs × 1000 candidates,
-// 150 / 20 / 30), labelled with both, in the mesh frame (before 2026-12-04).
-// mugs-v3: the varied family (flared lips, uneven surfaces, cups without handles, wider sizes),
-// 180 mugs × 300 candidates, 140 / 15 / 25, labelled in the simulation frame; the bundled model's
-// training set.
+// mugs-v1: the project's first training set (docs/dataset.md): 130 mugs × 2000 candidates, 100
+// train / 10 val / 20 test, labelled before the simulator had pad normals and its own convex
+// collider. mugs-v2: the same labelling budget spread over twice the shapes (200 mugs × 1000
+// candidates, 150 / 20 / 30), labelled with both, in the mesh frame (before 2026-12-04). mugs-v3:
+// the varied family (flared lips, uneven surfaces, cups without handles, wider sizes), 180 mugs ×
+// 300 candidates, 140 / 15 / 25, labelled in the simulation frame; the bundled model's training
+// set.
 constexpr Preset kPresets[] = {
     {"mugs-v1", 130, 10, 20, 2000, 20261122,
      R"({"pad_normal_inset": -1.0, "mujoco_convex": true, "legacy_object_frame": true,

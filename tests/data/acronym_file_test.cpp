@@ -52,7 +52,7 @@ TEST(AcronymFile, TransformsAreRigidWith330HalfTurns) {
     const Mat3 R = T.topLeftCorner<3, 3>();
     half_turns += R.isApprox(R.transpose(), 1e-12) && lie::so3_angle(R) > 3.0;
   }
-  // shared/data/acronym/README.md says 334; h5py and this code both count 330 exact half turns
+  // The ACRONYM sample's notes said 334; h5py and this code both count 330 exact half turns
   // (symmetric R, trace = −1 to 1e-12).
   EXPECT_EQ(half_turns, 330);
 }

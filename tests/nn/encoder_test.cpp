@@ -32,8 +32,8 @@ EncoderOptions small_options() {
   return options;
 }
 
-// The EdgeConv layer as written in METHOD.md §3: per edge, the layer on [V_j − V_i ; V_i], then
-// the mean over the k neighbours. v is [B, N, C, 3]; returns [B, N, C_out, 3].
+// The EdgeConv layer as written in docs/method.md ("Encoder"): per edge, the layer on [V_j − V_i ;
+// V_i], then the mean over the k neighbours. v is [B, N, C, 3]; returns [B, N, C_out, 3].
 torch::Tensor naive_edge_layer(VNLinearLeakyReLU& layer, const torch::Tensor& v,
                                const torch::Tensor& index) {
   const int64_t b = v.size(0), n = v.size(1), k = index.size(2);

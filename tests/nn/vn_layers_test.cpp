@@ -24,7 +24,7 @@ using graspecmf::testing::rotate;
 using VnLayersTest = NnTest;
 using KnnTest = NnTest;
 
-// METHOD.md §2's VN-LeakyReLU written with tensor operations, vectors along the last axis of
+// docs/method.md's VN-LeakyReLU written with tensor operations, vectors along the last axis of
 // [..., C, 3]; d has q's channels or one (broadcast). The fused layer must match it.
 torch::Tensor reference_leaky_relu(const torch::Tensor& q, const torch::Tensor& d, double slope) {
   const auto dot = (q * d).sum(-1, true);

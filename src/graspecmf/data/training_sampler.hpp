@@ -1,7 +1,8 @@
 #pragma once
-// What one training step sees (METHOD.md §5, §8): a few objects, each with a fresh surface point
-// cloud and a subset of its successful grasps, rotated by the augmentation, centred on the cloud's
-// centroid and scaled by the network's position scale. Torch-free: plain float arrays.
+// What one training step sees (docs/method.md, "Flow matching on SO(3) × R³"): a few objects, each
+// with a fresh surface point cloud and a subset of its successful grasps, rotated by the
+// augmentation, centred on the cloud's centroid and scaled by the network's position scale.
+// Torch-free: plain float arrays.
 
 #include <cstdint>
 #include <string>

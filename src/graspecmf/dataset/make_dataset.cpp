@@ -29,7 +29,7 @@ namespace {
 constexpr std::size_t kPreviewObjects = 30;
 constexpr int kPreviewSize = 160;
 constexpr int kPreviewColumns = 6;
-// Objects with fewer successful grasps are left out of the split (METHOD.md §8, the paper's
+// Objects with fewer successful grasps are left out of the split (docs/dataset.md; the paper's
 // filter).
 constexpr std::size_t kMinSuccessful = 100;
 

@@ -1,6 +1,7 @@
 #pragma once
 // Rigid transforms SE(3) as (R, p): composition, inverse, action on points, conversion to and from
-// 4×4 matrices, the product distance sqrt(θ² + |Δp|²) of METHOD.md §7, and the flow-matching path.
+// 4×4 matrices, the product distance sqrt(θ² + |Δp|²) of docs/method.md ("Evaluation: the EMD"),
+// and the flow-matching path.
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #pragma once
-// Earth Mover's Distance between two equally sized sets of grasp poses (METHOD.md §7): the mean
-// cost of the exact optimal one-to-one matching.
+// Earth Mover's Distance between two equally sized sets of grasp poses (docs/method.md,
+// "Evaluation: the EMD"): the mean cost of the exact optimal one-to-one matching.
 
 #include <vector>
 

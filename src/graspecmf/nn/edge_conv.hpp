@@ -1,5 +1,6 @@
 #pragma once
-// The fused neighbour aggregation of a VN EdgeConv layer (docs METHOD.md §3), channels last.
+// The fused neighbour aggregation of a VN EdgeConv layer (docs/method.md, "Encoder"), channels
+// last.
 
 #include <ATen/core/Tensor.h>
 

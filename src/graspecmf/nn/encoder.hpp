@@ -1,6 +1,6 @@
 #pragma once
-// The VN-DGCNN encoder (docs METHOD.md §3): a centred, scaled point cloud → z, a list of vectors
-// that rotates with the cloud, E(g·P) = g·E(P).
+// The VN-DGCNN encoder (docs/method.md, "Encoder"): a centred, scaled point cloud → z, a list of
+// vectors that rotates with the cloud, E(g·P) = g·E(P).
 
 #include <torch/nn/module.h>
 #include <torch/nn/pimpl.h>

@@ -1,5 +1,5 @@
 #pragma once
-// k nearest neighbours in feature space for dynamic graph convolutions (docs METHOD.md §3).
+// k nearest neighbours in feature space for dynamic graph convolutions (docs/method.md, "Encoder").
 
 #include <ATen/core/Tensor.h>
 

@@ -1,8 +1,8 @@
 #pragma once
 // The conditional vector field v_t(z, x) on SO(3) × R³ with the equivariant lifting layer
-// (docs METHOD.md §4). Inputs per grasp: its object's z (Z vectors), the pose (R's columns r1, r2,
-// r3 and p) and the time t, lifted to the vector t·f_equi([z, r1, r2, r3, p]). The input list
-// [z, r1, r2, r3, p, t·f_equi] (Z + 5 vectors) runs through a VN-MLP to (ω, v). With
+// (docs/method.md, "The vector field"). Inputs per grasp: its object's z (Z vectors), the pose (R's
+// columns r1, r2, r3 and p) and the time t, lifted to the vector t·f_equi([z, r1, r2, r3, p]). The
+// input list [z, r1, r2, r3, p, t·f_equi] (Z + 5 vectors) runs through a VN-MLP to (ω, v). With
 // z_every_layer (not in the paper) every later hidden layer takes [h, z] too.
 
 #include <torch/nn/module.h>

@@ -1,7 +1,8 @@
 #pragma once
-// Vector-neuron (VN) layers (docs METHOD.md §2). A VN feature is a float32 tensor [..., C, 3]:
-// C vector channels, a rotation acts on the last axis. Every map here commutes with rotations.
-// Weights start uniform in ±1/sqrt(in_channels) (the bound of PyTorch's nn.Linear default).
+// Vector-neuron (VN) layers (docs/method.md, "Vector-neuron layers"). A VN feature is a float32
+// tensor [..., C, 3]: C vector channels, a rotation acts on the last axis. Every map here commutes
+// with rotations. Weights start uniform in ±1/sqrt(in_channels) (the bound of PyTorch's nn.Linear
+// default).
 
 #include <torch/nn/module.h>
 #include <torch/nn/pimpl.h>

@@ -1,6 +1,7 @@
 #pragma once
-// The VN-LeakyReLU of one vector channel and its gradient (docs METHOD.md §2), inlined into the
-// fused kernels of vn_layers.cpp and edge_conv.cpp so that their channel loops vectorise.
+// The VN-LeakyReLU of one vector channel and its gradient (docs/method.md, "Vector-neuron layers"),
+// inlined into the fused kernels of vn_layers.cpp and edge_conv.cpp so that their channel loops
+// vectorise.
 
 #include <algorithm>
 

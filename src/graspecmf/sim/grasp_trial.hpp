@@ -1,6 +1,6 @@
 #pragma once
 // One MuJoCo model + data for an object, running grasp trials: place the open hand at the grasp,
-// close, lift and shake, then judge (METHOD.md §9). Not thread-safe: use one per thread.
+// close, lift and shake, then judge (docs/simulator.md). Not thread-safe: use one per thread.
 
 #include <memory>
 

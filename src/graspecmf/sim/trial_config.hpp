@@ -1,6 +1,6 @@
 #pragma once
-// Every parameter of the grasp shake test (METHOD.md §9), with physically sensible defaults; the
-// whole struct is written beside any results it produced.
+// Every parameter of the grasp shake test (docs/simulator.md), with physically sensible defaults;
+// the whole struct is written beside any results it produced.
 
 #include <nlohmann/json_fwd.hpp>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
-// EMD evaluation of a model on objects with known successful grasps (METHOD.md §7, §8): fixed
-// seeded clouds, fixed test rotations, n generated against n reference grasps.
+// EMD evaluation of a model on objects with known successful grasps (docs/method.md, "Evaluation:
+// the EMD"): fixed seeded clouds, fixed test rotations, n generated against n reference grasps.
 
 #include <cstdint>
 #include <optional>

@@ -1,6 +1,7 @@
 #pragma once
-// Drawing grasps from a trained model (METHOD.md §§1, 6): centre and scale the cloud, integrate the
-// guided flow from prior samples, and map the grasps back to the cloud's frame in metres.
+// Drawing grasps from a trained model (docs/method.md, "Sampling: integrating the flow"): centre
+// and scale the cloud, integrate the guided flow from prior samples, and map the grasps back to the
+// cloud's frame in metres.
 
 #include <cstdint>
 #include <vector>

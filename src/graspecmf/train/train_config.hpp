@@ -1,6 +1,6 @@
 #pragma once
-// Every setting of a training run (METHOD.md §§3–5, §8), read from and written to JSON; the run
-// folder keeps a copy, and a resumed run must use the same one.
+// Every setting of a training run (docs/config.md lists every key), read from and written to JSON;
+// the run folder keeps a copy, and a resumed run must use the same one.
 
 #include <cstdint>
 #include <filesystem>

@@ -87,8 +87,9 @@ StepTensors to_tensors(const std::vector<data::ObjectSample>& samples, c10::Devi
           {torch::cat(rotations).to(device), torch::cat(positions).to(device)}};
 }
 
-// The flow-matching loss of one batch (METHOD.md §5), differentiable in the model's parameters.
-// The noise comes from the CPU generator, so a seed draws the same noise on every device.
+// The flow-matching loss of one batch (docs/method.md, "Flow matching on SO(3) × R³"),
+// differentiable in the model's parameters. The noise comes from the CPU generator, so a seed draws
+// the same noise on every device.
 at::Tensor batch_loss(const nn::GraspFlowModel& model, const StepTensors& batch,
                       const TrainConfig& config, at::Generator& generator) {
   const int64_t g = batch.grasps.R.size(0);
