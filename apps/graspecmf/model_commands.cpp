@@ -434,6 +434,8 @@ void run_evaluate(const EvaluateArgs& a) {
                   {{"solver", settings.solver},
                    {"steps", settings.steps},
                    {"guidance", settings.guidance},
+                   {"clouds", settings.clouds},
+                   {"refine", a.checks.refine},
                    {"reject_collisions", a.checks.collisions},
                    {"reject_shallow", a.checks.shallow}}},
                  {"seed", a.seed},
@@ -534,7 +536,7 @@ void add_model_commands(CLI::App& app) {
   CLI::App* sample_cmd = app.add_subcommand("sample", "Generate grasps for an object");
   sample_cmd->add_option("--model", s->model,
                          "Trained run or exported model folder (default: the bundled mugs model)");
-  sample_cmd->add_option("--mesh", s->mesh, "Object mesh (.obj/.stl/.ply)");
+  sample_cmd->add_option("--mesh", s->mesh, "Object mesh (.obj/.stl/.ply/.glb/.gltf)");
   sample_cmd->add_option("--points", s->points, "Point cloud (.xyz/.txt/.npy/.ply)");
   s->units.add_options(sample_cmd);
   sample_cmd->add_option("--acronym", s->acronym, "ACRONYM grasp file naming the object");
@@ -576,7 +578,7 @@ void add_model_commands(CLI::App& app) {
       ->add_option("--success", e->success,
                    "Also simulate the first K generated grasps of each rotation (and, with "
                    "--baselines, K of the nearest object's) and report the success rate; "
-                   "METHOD.md uses 100")
+                   "the paper uses 100")
       ->check(CLI::Range(std::size_t{1}, std::size_t{100000}));
   eval_cmd->add_option("--sim-config", e->sim_config,
                        "Trial config for --success (JSON, as for simulate --config)");
