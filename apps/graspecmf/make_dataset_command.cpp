@@ -10,7 +10,9 @@
 #include <thread>
 #include <vector>
 
+#include "cli_checks.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/core/progress.hpp"
 #include "graspecmf/dataset/make_dataset.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
@@ -60,6 +62,7 @@ struct MakeDatasetArgs {
 dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
   const int sources = !a.preset.empty() + (a.mugs > 0) + !a.meshes.empty();
   if (sources != 1) throw Error("make-dataset: give exactly one of --preset, --mugs or --meshes");
+  require_distinct_output("--out", a.out, {a.config_file}, {a.meshes});
   dataset::MakeDatasetOptions o;
   o.out = a.out;
   o.seed = a.seed;
@@ -174,7 +177,7 @@ void add_make_dataset_command(CLI::App& app) {
       "Folder of your own .obj/.stl/.ply/.glb/.gltf meshes (open ones are alpha-wrapped)");
   a->units.add_options(cmd);
   cmd->add_option("--density", a->density, "Object density, kg/m³ (ACRONYM: 150)")
-      ->check(CLI::PositiveNumber);
+      ->check(kPositiveFiniteNumber);
   CLI::Option* grasps =
       cmd->add_option("--grasps", a->grasps, "Candidates per object (default 2000)")
           ->check(CLI::Range(1, 1000000));

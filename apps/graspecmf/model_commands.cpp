@@ -14,8 +14,10 @@
 #include <vector>
 
 #include "bundled_model.hpp"
+#include "cli_checks.hpp"
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/core/progress.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/data/acronym_file.hpp"
@@ -53,6 +55,7 @@ struct TrainArgs {
 };
 
 void run_train(const TrainArgs& a) {
+  require_distinct_output("--out", a.out, {a.config}, {a.data});
   const train::TrainConfig config = train::read_train_config(a.config);
   const c10::Device device = train::parse_device(a.device);
   std::unique_ptr<ProgressLine> progress;
@@ -100,7 +103,8 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
   cmd->add_option("--solver", o.solver, "euler, heun or rkmk4 (default: the run's)");
   cmd->add_option("--steps", o.steps, "ODE steps")->check(CLI::Range(1, 100000));
   cmd->add_option("--guidance", o.guidance,
-                  "Classifier-free guidance weight (0 = unconditional; default: the run's)");
+                  "Classifier-free guidance weight (0 = unconditional; default: the run's)")
+      ->check(kFiniteNumber);
   cmd->add_option("--clouds", o.clouds,
                   "Encode this many point clouds of the object and average their z (default: "
                   "the run's, 1 as in the paper)")
@@ -202,6 +206,9 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
 }
 
 void run_sample(const SampleArgs& a) {
+  std::vector<fs::path> inputs = train::model_folder_files(model_or_bundled(a.model));
+  inputs.insert(inputs.end(), {a.mesh, a.points, a.acronym});
+  require_distinct_output("--out", a.out, inputs);
   at::set_num_threads(a.threads);
   const train::TrainedModel trained =
       train::load_trained_model(model_or_bundled(a.model), train::parse_device(a.device));
@@ -329,8 +336,14 @@ nlohmann::json comparison_json(const metrics::PairedComparison& c) {
 }
 
 void run_evaluate(const EvaluateArgs& a) {
-  at::set_num_threads(a.threads);
   const std::string model = model_or_bundled(a.model).string();
+  std::vector<fs::path> inputs = train::model_folder_files(model);
+  inputs.insert(inputs.end(), {a.acronym, a.sim_config});
+  for (const auto& [option, out] : {std::pair{"--out", a.out}, {"--markdown", a.markdown}}) {
+    require_distinct_output(option, out, inputs, {a.data, a.train_data});
+  }
+  require_distinct_output("--markdown", a.markdown, {a.out});
+  at::set_num_threads(a.threads);
   const train::TrainedModel trained =
       train::load_trained_model(model, train::parse_device(a.device));
   const std::vector<data::GraspObject> objects = evaluation_objects(a);
@@ -497,9 +510,9 @@ void run_evaluate(const EvaluateArgs& a) {
     }
   }
   std::cout << table << summary << "\n";
-  if (!a.out.empty()) write_text_atomically(a.out, report.dump(1) + "\n");
+  if (!a.out.empty()) write_file_atomically(a.out, report.dump(1) + "\n");
   if (!a.markdown.empty()) {
-    write_text_atomically(
+    write_file_atomically(
         a.markdown, fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", model,
                                 trained.step, settings.solver, settings.steps, settings.guidance,
                                 filter_note(a.checks), table, summary));
@@ -528,6 +541,7 @@ void add_model_commands(CLI::App& app) {
   export_cmd->add_option("--model", x->first, "Run folder of a trained model")->required();
   export_cmd->add_option("--out", x->second, "Output folder (config.json, model.pt)")->required();
   export_cmd->callback([x] {
+    require_distinct_output("--out", x->second, {}, {x->first});
     const std::int64_t step = train::export_model(x->first, x->second);
     std::cout << fmt::format("exported step {} of {} → {}\n", step, x->first, x->second);
   });

@@ -1,5 +1,7 @@
 #include "object_units.hpp"
 
+#include "cli_checks.hpp"
+
 namespace graspecmf::apps {
 
 void SizeCheck::add_option(CLI::App* cmd) {
@@ -14,7 +16,7 @@ void SizeCheck::check(const std::vector<geometry::Vec3>& points, const std::stri
 
 void ObjectUnits::add_options(CLI::App* cmd) {
   CLI::Option* scale_option = cmd->add_option("--scale", scale, "Input units to metres (a factor)")
-                                  ->check(CLI::PositiveNumber);
+                                  ->check(kPositiveFiniteNumber);
   cmd->add_option("--units", units, "Input units: mm, cm, m or in (instead of --scale)")
       ->check(CLI::IsMember({"mm", "cm", "m", "in"}))
       ->excludes(scale_option);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/watertight.hpp"
 #include "graspecmf/geometry/watertight_cache.hpp"
@@ -54,13 +55,7 @@ void check_paths(const PrepareMeshArgs& a) {
   if (ext != ".obj" && ext != ".ply") {
     throw Error("prepare-mesh: --out " + a.out + " must end in .obj or .ply");
   }
-  std::error_code ec;
-  const bool same = fs::weakly_canonical(a.in, ec) == fs::weakly_canonical(a.out, ec) ||
-                    (fs::exists(a.out, ec) && fs::equivalent(a.in, a.out, ec));
-  if (same) {
-    throw Error("prepare-mesh: --out " + a.out +
-                " is the input file; write the closed mesh to another path");
-  }
+  require_distinct_output("--out", a.out, {a.in});
 }
 
 nlohmann::json mesh_json(std::size_t vertices, std::size_t triangles,

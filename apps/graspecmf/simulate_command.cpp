@@ -12,6 +12,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/core/progress.hpp"
 #include "graspecmf/core/version.hpp"
 #include "graspecmf/data/dataset.hpp"
@@ -71,8 +72,13 @@ data::AcronymGraspFile labelled_record(const data::AcronymGraspFile& record,
 }
 
 void run(const SimulateOptions& o) {
+  require_distinct_output("--out", o.out, {o.grasp_file, o.config_file});
   const sim::TrialConfig config = sim::read_trial_config(o.config_file);
   const data::AcronymGraspFile record = data::read_acronym_file(o.grasp_file);
+  if (record.gripper_type != "franka_panda" && record.gripper_type != "panda") {
+    throw Error(o.grasp_file + ": gripper type '" + record.gripper_type +
+                "' cannot be simulated (only the Franka Panda hand: franka_panda or panda)");
+  }
   if (o.compare_labels && !record.qualities) {
     throw Error(o.grasp_file + ": --compare-labels needs the file's object_in_gripper labels");
   }
@@ -160,7 +166,7 @@ void run(const SimulateOptions& o) {
                       {"shaking_slip", r.shaking_slip},
                       {"final_opening", r.final_opening}});
   }
-  write_text_atomically(o.out, summary.dump(1) + "\n");
+  write_file_atomically(o.out, summary.dump(1) + "\n");
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/gripper/panda.hpp"
@@ -28,6 +29,8 @@ void run(const ViewArgs& a) {
   if (a.out.empty() && a.png.empty()) {
     throw Error("view: nothing to write; give --out FILE.html, --png FILE.png or both");
   }
+  require_distinct_output("--out", a.out, {a.grasp_file});
+  require_distinct_output("--png", a.png, {a.grasp_file, a.out});
   const data::AcronymGraspFile record = data::read_acronym_file(a.grasp_file);
   const geometry::TriangleMesh mesh = geometry::scaled(
       geometry::read_mesh(data::find_object_mesh(a.grasp_file, record.object.file, a.mesh_root)),
@@ -58,7 +61,7 @@ void run(const ViewArgs& a) {
       fmt::format("{}: {} of {} grasps", std::filesystem::path(a.grasp_file).filename().string(),
                   shown.size(), record.size());
   if (!a.out.empty()) {
-    write_text_atomically(a.out, viz::html_view(mesh, segments, title));
+    write_file_atomically(a.out, viz::html_view(mesh, segments, title));
     std::cout << fmt::format("wrote {} ({})\n", a.out, title);
   }
   if (!a.png.empty()) {

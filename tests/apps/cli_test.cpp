@@ -423,11 +423,34 @@ TEST(CliPrepareMesh, WrapsTheMillimetreMugWithHolesAndReadsTheCacheTheSecondTime
       << closed.out;
 }
 
+// An output path that names an input (directly, through "..", or by a link) is refused and the
+// input is left as it was.
+TEST(Cli, OutputThatIsAnInputIsRefused) {
+  ScratchDir dir;
+  const fs::path copy = dir / "grasps.h5";
+  fs::copy_file(sample_grasp_file(), copy);
+  fs::create_symlink(copy, dir / "link.h5");
+  const std::string original = read_file(copy);
+  const std::string root = " --mesh-root " + graspecmf::testing::sample_root().string();
+  for (const std::string& out :
+       {copy.string(), (dir / "sub/../grasps.h5").string(), (dir / "link.h5").string()}) {
+    fs::create_directories(dir / "sub");
+    expect_one_error_line(
+        run("simulate " + copy.string() + root + " --every 500 --out " + out, dir),
+        "is also the input");
+    expect_one_error_line(run("view " + copy.string() + root + " --out " + out, dir),
+                          "is also the input");
+    expect_one_error_line(run("view " + copy.string() + root + " --png " + out, dir),
+                          "is also the input");
+  }
+  EXPECT_EQ(read_file(copy), original);
+}
+
 TEST(CliPrepareMesh, BadInput) {
   ScratchDir dir;
   const std::string in = (fs::path(GRASPECMF_DATA_DIR) / "real-object/mug-holes-mm.obj").string();
   expect_one_error_line(run("prepare-mesh " + in + " --units mm --out " + in, dir),
-                        "is the input file");
+                        "is also the input");
   expect_one_error_line(
       run("prepare-mesh " + in + " --units mm --alpha 3mm --out " + (dir / "a.obj").string(), dir),
       "--alpha '3mm' is not a positive length");

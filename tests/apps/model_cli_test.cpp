@@ -2,7 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <vector>
 
 #include "../train/tiny_dataset.hpp"
 #include "cli_support.hpp"
@@ -15,7 +19,9 @@ namespace fs = std::filesystem;
 using graspecmf::testing::expect_one_error_line;
 using graspecmf::testing::read_file;
 using graspecmf::testing::run;
+using graspecmf::testing::run_on_full_disk;
 using graspecmf::testing::ScratchDir;
+using graspecmf::testing::temporary_files;
 using graspecmf::testing::write_file;
 
 // A model small enough to train in a second.
@@ -244,6 +250,82 @@ TEST(CliModel, BadInput) {
       run("evaluate --model " + run_dir + " --data " + data.string() + " --split val --device tpu",
           dir),
       "unknown device 'tpu'");
+}
+
+// Outputs that name an input, and options that cannot be applied, are refused.
+TEST(CliModel, RefusesOutputsOntoInputsAndNonFiniteGuidance) {
+  ScratchDir dir;
+  const fs::path data = graspecmf::testing::tiny_dataset(dir);
+  write_file(dir / "tiny.json", kTinyConfig);
+  const std::string run_dir = (dir / "run").string();
+  expect_one_error_line(run("train --config " + (dir / "tiny.json").string() + " --data " +
+                                data.string() + " --out " + data.string(),
+                            dir),
+                        "is also the input");
+  ASSERT_EQ(run("train --config " + (dir / "tiny.json").string() + " --data " + data.string() +
+                    " --out " + run_dir,
+                dir)
+                .exit_code,
+            0);
+  const std::string config = read_file(dir / "run/config.json");
+  const std::string mesh = (data / "meshes/Box/b0.obj").string();
+  ASSERT_EQ(run("sample --model " + run_dir + " --mesh " + mesh + " --num 7 --out " +
+                    (dir / "g.h5").string(),
+                dir)
+                .exit_code,
+            0);
+  const std::string grasps = read_file(dir / "g.h5");
+  expect_one_error_line(
+      run("sample --model " + run_dir + " --acronym " + (dir / "g.h5").string() + " --mesh-root " +
+              dir.path().string() + " --num 7 --out " + (dir / "g.h5").string(),
+          dir),
+      "is also the input");
+  EXPECT_EQ(read_file(dir / "g.h5"), grasps);
+  expect_one_error_line(run("sample --model " + run_dir + " --mesh " + mesh + " --num 7 --out " +
+                                (dir / "run/config.json").string(),
+                            dir),
+                        "is also the input");
+  expect_one_error_line(run("evaluate --model " + run_dir + " --data " + data.string() +
+                                " --split val --out " + (dir / "run/config.json").string(),
+                            dir),
+                        "is also the input");
+  EXPECT_EQ(read_file(dir / "run/config.json"), config);
+  const auto nan = run("sample --model " + run_dir + " --mesh " + mesh +
+                           " --num 7 --guidance nan --out " + (dir / "n.h5").string(),
+                       dir);
+  EXPECT_NE(nan.exit_code, 0);
+  EXPECT_NE(nan.err.find("--guidance: must be a finite number"), std::string::npos) << nan.err;
+  EXPECT_FALSE(fs::exists(dir / "n.h5"));
+}
+
+// On a full disk train and sample stop with one error line and leave no temporary file; the
+// resumed run logs every step once.
+TEST(CliModel, FullDisk) {
+  ScratchDir dir;
+  const fs::path data = graspecmf::testing::tiny_dataset(dir);
+  write_file(dir / "tiny.json", kTinyConfig);
+  const std::string train = "train --config " + (dir / "tiny.json").string() + " --data " +
+                            data.string() + " --out " + (dir / "run").string();
+  // Room for the run's config and log lines, not for its first checkpoint.
+  graspecmf::testing::expect_error_after_progress(
+      run_on_full_disk(train, dir, 8000), "cannot write " + (dir / "run/checkpoint.pt").string());
+  EXPECT_TRUE(temporary_files(dir / "run").empty());
+  ASSERT_EQ(run(train, dir).exit_code, 0);
+  std::istringstream log(read_file(dir / "run/log.jsonl"));
+  std::vector<std::int64_t> steps;
+  for (std::string line; std::getline(log, line);) {
+    steps.push_back(nlohmann::json::parse(line)["step"].get<std::int64_t>());
+  }
+  EXPECT_EQ(steps, (std::vector<std::int64_t>{2, 4, 4}));  // losses at 2 and 4, validation at 4
+
+  const fs::path out = dir / "grasps.h5";
+  expect_one_error_line(
+      run_on_full_disk("sample --model " + (dir / "run").string() + " --mesh " +
+                           (data / "meshes/Box/b0.obj").string() + " --num 7 --out " + out.string(),
+                       dir, 1500),
+      "cannot write " + out.string());
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(temporary_files(dir.path()).empty());
 }
 
 }  // namespace

@@ -17,14 +17,14 @@ using testing::ScratchDir;
 
 TEST(AtomicFile, WritesText) {
   ScratchDir dir;
-  write_text_atomically(dir / "a.txt", "hello\n");
+  write_file_atomically(dir / "a.txt", "hello\n");
   EXPECT_EQ(read_file(dir / "a.txt"), "hello\n");
   EXPECT_EQ(dir.num_files(), 1u);
 }
 
 TEST(AtomicFile, FailedWriterKeepsOldFileAndLeavesNoTemporary) {
   ScratchDir dir;
-  write_text_atomically(dir / "a.txt", "old");
+  write_file_atomically(dir / "a.txt", "old");
   EXPECT_THROW(write_atomically(dir / "a.txt",
                                 [](const fs::path& tmp) {
                                   std::ofstream(tmp) << "partial";
@@ -38,7 +38,7 @@ TEST(AtomicFile, FailedWriterKeepsOldFileAndLeavesNoTemporary) {
 TEST(AtomicFile, MissingFolderIsAClearError) {
   ScratchDir dir;
   try {
-    write_text_atomically(dir / "no" / "such" / "a.txt", "x");
+    write_file_atomically(dir / "no" / "such" / "a.txt", "x");
     FAIL() << "expected an Error";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("does not exist"), std::string::npos) << e.what();

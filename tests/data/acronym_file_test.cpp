@@ -12,19 +12,9 @@
 namespace graspecmf::data {
 namespace {
 namespace fs = std::filesystem;
+using graspecmf::testing::expect_error;
 using graspecmf::testing::sample_grasp_file;
 using graspecmf::testing::ScratchDir;
-
-// Expects `call` to throw Error whose message contains `fragment`.
-template <typename F>
-void expect_error(F&& call, const std::string& fragment) {
-  try {
-    call();
-    ADD_FAILURE() << "expected an Error containing '" << fragment << "'";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
-  }
-}
 
 TEST(AcronymFile, SampleMugFacts) {
   const AcronymGraspFile record = read_acronym_file(sample_grasp_file());
@@ -148,6 +138,47 @@ TEST(AcronymFile, WrongTransformShape) {
     writer.close();
   }
   expect_error([&] { read_acronym_file(dir / "bad.h5"); }, "expected (N, 4, 4)");
+}
+
+// A copy of the sample with grasp 7's transform or label changed, written as h5py would.
+fs::path altered_sample(const ScratchDir& dir, const Mat4& transform, std::int64_t label) {
+  const AcronymGraspFile record = read_acronym_file(sample_grasp_file());
+  std::vector<double> transforms;
+  for (std::size_t i = 0; i < record.size(); ++i) {
+    Mat4 T = i == 7 ? transform : record.transforms[i];
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) transforms.push_back(T(r, c));
+  }
+  std::vector<std::int64_t> labels = record.qualities->object_in_gripper;
+  labels[7] = label;
+  const fs::path path = dir / "altered.h5";
+  Hdf5Writer writer(path);
+  writer.write_doubles("grasps/transforms", transforms, {record.size(), 4, 4});
+  writer.write_int64s("grasps/qualities/flex/object_in_gripper", labels, {record.size()});
+  writer.write_string("object/file", record.object.file);
+  writer.write_double("object/scale", record.object.scale);
+  writer.close();
+  return path;
+}
+
+TEST(AcronymFile, NonRigidTransformsAndOtherLabelsAreRefused) {
+  ScratchDir dir;
+  const Mat4 good = read_acronym_file(sample_grasp_file()).transforms[7];
+  EXPECT_EQ(read_acronym_file(altered_sample(dir, good, 1)).transforms[7], good);
+  Mat4 scaled = good;
+  scaled.topLeftCorner<3, 3>() *= 2.0;
+  Mat4 mirrored = good;
+  mirrored.col(0) *= -1.0;
+  Mat4 projective = good;
+  projective(3, 0) = 0.5;
+  for (const Mat4& bad : {scaled, mirrored, projective}) {
+    expect_error([&] { read_acronym_file(altered_sample(dir, bad, 1)); },
+                 "/grasps/transforms[7] is not a rigid transform");
+  }
+  for (const std::int64_t label : {-3, 4}) {
+    expect_error([&] { read_acronym_file(altered_sample(dir, good, label)); },
+                 "object_in_gripper[7] is " + std::to_string(label) + "; labels are 0 or 1");
+  }
 }
 
 TEST(AcronymFile, LabelCountMustMatchGraspCount) {

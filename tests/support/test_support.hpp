@@ -1,6 +1,6 @@
 #pragma once
 // Shared by all test suites: paths of the bundled ACRONYM sample (data/acronym-sample), a scratch
-// folder per test, and whole-file read/write helpers.
+// folder per test, whole-file read/write helpers, and an expectation on graspecmf::Error.
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -9,6 +9,8 @@
 #include <fstream>
 #include <iterator>
 #include <string>
+
+#include "graspecmf/core/error.hpp"
 
 namespace graspecmf::testing {
 
@@ -23,6 +25,17 @@ inline std::filesystem::path sample_mesh_file() {
 }
 inline std::filesystem::path gripper_mesh_file() {
   return sample_root() / "franka_gripper_collision_mesh.stl";
+}
+
+// Expects `call` to throw graspecmf::Error whose message contains `fragment`.
+template <typename F>
+void expect_error(F&& call, const std::string& fragment) {
+  try {
+    call();
+    ADD_FAILURE() << "expected an Error containing '" << fragment << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
 }
 
 // A fresh, empty folder named after the running test and process; removed with the object.

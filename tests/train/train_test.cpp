@@ -102,6 +102,25 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
                Error);
 }
 
+TEST(TrainConfig, IntegersAreIntegersWithinRange) {
+  const auto expect = [](const nlohmann::json& j, const std::string& fragment) {
+    graspecmf::testing::expect_error([&] { train_config_from_json(j); }, fragment);
+  };
+  expect({{"steps", 12.7}}, "train config: steps must be an integer");
+  expect({{"seed", -1}}, "train config: seed is out of range");
+  expect({{"data", {{"objects_per_step", -1}}}}, "data.objects_per_step is out of range");
+  expect({{"sampling", {{"steps", 4294967296}}}}, "sampling.steps is out of range");
+  expect({{"model", {{"field", {{"hidden_widths", {8, 2.5}}}}}}},
+         "model.field.hidden_widths must be a list of integers");
+  expect({{"data", {{"grasps_per_object", 1000000}}}}, "grasps_per_object ≤ 100000");
+  expect({{"model", {{"encoder", {{"widths", {8, 100000}}}}}}}, "1 to 4096 channels");
+  // 1024 objects of 100000 points with 256 neighbours: far past the memory limit.
+  expect({{"data", {{"objects_per_step", 1024}}},
+          {"model", {{"encoder", {{"points", 100000}, {"k", 256}}}}}},
+         "the limit is 16 GiB");
+  EXPECT_EQ(train_config_from_json({{"steps", 12}, {"seed", 7}}).seed, 7u);
+}
+
 TEST(Sampling, EndToEndSamplingIsEquivariant) {
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();

@@ -1,6 +1,7 @@
 #pragma once
-// Atomic file output: a writer fills a temporary file beside the target, which is renamed over the
-// target only when the writer returns; on any failure the target is left exactly as it was.
+// Checked file output. Atomic writes: a writer fills a temporary file beside the target, which is
+// renamed over the target only when the writer returns; on any failure the target is left exactly
+// as it was and the temporary file is removed. Every write and close is checked.
 
 #include <filesystem>
 #include <functional>
@@ -14,7 +15,20 @@ namespace graspecmf {
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
 
-// Writes text to target atomically.
-void write_text_atomically(const std::filesystem::path& target, std::string_view text);
+// Writes bytes (text or binary) to target atomically.
+void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
+
+// Creates (truncates) path and writes bytes to it with every write and the close checked; throws
+// Error "cannot write <shown_as>: <system reason>" (shown_as defaults to path) on any failure.
+void write_file_bytes(const std::filesystem::path& path, std::string_view bytes,
+                      const std::filesystem::path& shown_as = {});
+
+// Appends text to path (created if missing), checked like write_file_bytes. A failed append may
+// leave part of text in the file.
+void append_file_text(const std::filesystem::path& path, std::string_view text);
+
+// Removes the temporary files that write_atomically leaves when its process is killed, in folder
+// and below (for a resumed job); returns how many were removed.
+std::size_t remove_temporary_files(const std::filesystem::path& folder);
 
 }  // namespace graspecmf

@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/hdf5_file.hpp"
 
@@ -34,6 +33,10 @@ std::string shape_text(const Shape& shape) {
   return text + ")";
 }
 
+// Deviation from a rigid transform tolerated in a file: float32 poses keep about 1e-7; 1e-4 still
+// refuses scaled or sheared ones.
+constexpr double kMaxRigidityError = 1e-4;
+
 std::vector<Mat4> read_transforms(const Hdf5Reader& file, const fs::path& path) {
   const Shape shape = file.shape(kTransforms);
   if (shape.size() != 3 || shape[1] != 4 || shape[2] != 4) {
@@ -44,6 +47,10 @@ std::vector<Mat4> read_transforms(const Hdf5Reader& file, const fs::path& path) 
   std::vector<Mat4> transforms(shape[0]);
   for (std::size_t i = 0; i < shape[0]; ++i) {
     transforms[i] = Eigen::Map<const RowMajorMatrix<4, 4>>(&values[16 * i]);
+    if (!(lie::rigidity_error(transforms[i]) <= kMaxRigidityError)) {
+      throw Error(path.string() + ": /" + kTransforms + "[" + std::to_string(i) +
+                  "] is not a rigid transform (rotation and translation, last row 0 0 0 1)");
+    }
   }
   return transforms;
 }
@@ -166,6 +173,12 @@ AcronymGraspFile read_acronym_file(const fs::path& path) {
   if (file.has_dataset(quality_path(kSuccess))) {
     GraspQualities q;
     read_per_grasp(file, path, kSuccess, n, q.object_in_gripper);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (q.object_in_gripper[i] != 0 && q.object_in_gripper[i] != 1) {
+        throw Error(path.string() + ": /" + quality_path(kSuccess) + "[" + std::to_string(i) +
+                    "] is " + std::to_string(q.object_in_gripper[i]) + "; labels are 0 or 1");
+      }
+    }
     read_per_grasp(file, path, kClosingLinear, n, q.motion_closing_linear);
     read_per_grasp(file, path, kClosingAngular, n, q.motion_closing_angular);
     read_per_grasp(file, path, kShakingLinear, n, q.motion_shaking_linear);
@@ -192,38 +205,36 @@ AcronymGraspFile read_acronym_file(const fs::path& path) {
 
 void write_acronym_file(const AcronymGraspFile& record, const fs::path& path) {
   check_writable(record, path);
-  write_atomically(path, [&](const fs::path& tmp) {
-    Hdf5Writer writer(tmp);
-    const std::size_t n = record.size();
-    std::vector<double> transforms(16 * n);
-    for (std::size_t i = 0; i < n; ++i) {
-      Eigen::Map<RowMajorMatrix<4, 4>> row_major(&transforms[16 * i]);
-      row_major = record.transforms[i];
-    }
-    writer.write_doubles(kTransforms, transforms, {n, 4, 4});
-    if (record.qualities) {
-      const GraspQualities& q = *record.qualities;
-      write_per_grasp(writer, kSuccess, q.object_in_gripper);
-      write_per_grasp(writer, kClosingAngular, q.motion_closing_angular);
-      write_per_grasp(writer, kClosingLinear, q.motion_closing_linear);
-      write_per_grasp(writer, kShakingAngular, q.motion_shaking_angular);
-      write_per_grasp(writer, kShakingLinear, q.motion_shaking_linear);
-    }
-    if (record.gripper_configuration) {
-      writer.write_doubles("gripper/configuration", {*record.gripper_configuration}, {1});
-    }
-    writer.write_string("gripper/type", record.gripper_type);
-    const AcronymObjectInfo& object = record.object;
-    if (object.com) write_matrix(writer, "object/com", *object.com, {3});
-    write_optional_double(writer, "object/density", object.density);
-    writer.write_string("object/file", object.file);
-    write_optional_double(writer, "object/friction", object.friction);
-    if (object.inertia) write_matrix(writer, "object/inertia", *object.inertia, {3, 3});
-    write_optional_double(writer, "object/mass", object.mass);
-    writer.write_double("object/scale", object.scale);
-    write_optional_double(writer, "object/volume", object.volume);
-    writer.close();
-  });
+  Hdf5Writer writer(path);
+  const std::size_t n = record.size();
+  std::vector<double> transforms(16 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    Eigen::Map<RowMajorMatrix<4, 4>> row_major(&transforms[16 * i]);
+    row_major = record.transforms[i];
+  }
+  writer.write_doubles(kTransforms, transforms, {n, 4, 4});
+  if (record.qualities) {
+    const GraspQualities& q = *record.qualities;
+    write_per_grasp(writer, kSuccess, q.object_in_gripper);
+    write_per_grasp(writer, kClosingAngular, q.motion_closing_angular);
+    write_per_grasp(writer, kClosingLinear, q.motion_closing_linear);
+    write_per_grasp(writer, kShakingAngular, q.motion_shaking_angular);
+    write_per_grasp(writer, kShakingLinear, q.motion_shaking_linear);
+  }
+  if (record.gripper_configuration) {
+    writer.write_doubles("gripper/configuration", {*record.gripper_configuration}, {1});
+  }
+  writer.write_string("gripper/type", record.gripper_type);
+  const AcronymObjectInfo& object = record.object;
+  if (object.com) write_matrix(writer, "object/com", *object.com, {3});
+  write_optional_double(writer, "object/density", object.density);
+  writer.write_string("object/file", object.file);
+  write_optional_double(writer, "object/friction", object.friction);
+  if (object.inertia) write_matrix(writer, "object/inertia", *object.inertia, {3, 3});
+  write_optional_double(writer, "object/mass", object.mass);
+  writer.write_double("object/scale", object.scale);
+  write_optional_double(writer, "object/volume", object.volume);
+  writer.close();
 }
 
 Mat3 standard_inertia(const Mat3& acronym_inertia) {

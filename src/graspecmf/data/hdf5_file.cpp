@@ -8,6 +8,7 @@
 #include <functional>
 #include <numeric>
 
+#include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 
 namespace graspecmf::data {
@@ -269,7 +270,11 @@ Hdf5Writer::Hdf5Writer(const fs::path& path) : impl_(std::make_unique<Impl>()) {
   silence_hdf5_errors();
   impl_->path = path;
   try {
-    impl_->file = H5::H5File(path.string(), H5F_ACC_TRUNC);
+    // The file is built in memory (the core driver without a backing store) and written out by
+    // close() with checked I/O, so that no disk error ever reaches HDF5's own close.
+    H5::FileAccPropList access;
+    access.setCore(1 << 20, false);
+    impl_->file = H5::H5File(path.string(), H5F_ACC_TRUNC, H5::FileCreatPropList::DEFAULT, access);
     impl_->open = true;
   } catch (const H5::Exception& e) {
     throw Error(path.string() + ": cannot create HDF5 file: " + describe(e));
@@ -281,7 +286,7 @@ Hdf5Writer::~Hdf5Writer() {
   try {
     impl_->file.close();
   } catch (const H5::Exception&) {
-    // A destructor must not throw; callers that care call close() and see the error there.
+    // Closing an in-memory file cannot meet a disk error; nothing is written without close().
   }
 }
 
@@ -322,11 +327,21 @@ void Hdf5Writer::write_string(const std::string& path, const std::string& value)
 void Hdf5Writer::close() {
   if (!impl_->open) return;
   impl_->open = false;
+  std::string image;
   try {
+    const hid_t id = impl_->file.getId();
+    if (H5Fflush(id, H5F_SCOPE_GLOBAL) < 0) throw H5::FileIException("H5Fflush", "flush failed");
+    const ssize_t size = H5Fget_file_image(id, nullptr, 0);
+    if (size < 0) throw H5::FileIException("H5Fget_file_image", "no file image");
+    image.resize(static_cast<std::size_t>(size));
+    if (H5Fget_file_image(id, image.data(), image.size()) != size) {
+      throw H5::FileIException("H5Fget_file_image", "short file image");
+    }
     impl_->file.close();
   } catch (const H5::Exception& e) {
-    throw Error(impl_->path.string() + ": cannot close HDF5 file: " + describe(e));
+    throw Error(impl_->path.string() + ": cannot finish HDF5 file: " + describe(e));
   }
+  write_file_atomically(impl_->path, image);
 }
 
 }  // namespace graspecmf::data

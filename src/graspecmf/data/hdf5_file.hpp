@@ -59,8 +59,9 @@ class Hdf5Reader {
 
 class Hdf5Writer {
  public:
-  // Creates (truncates) an HDF5 file; throws Error on failure.
+  // Starts an HDF5 file in memory; nothing touches path until close(). Throws Error on failure.
   explicit Hdf5Writer(const std::filesystem::path& path);
+  // Discards a file that was not closed; never throws.
   ~Hdf5Writer();
   Hdf5Writer(const Hdf5Writer&) = delete;
   Hdf5Writer& operator=(const Hdf5Writer&) = delete;
@@ -75,7 +76,8 @@ class Hdf5Writer {
   void write_double(const std::string& path, double value);
   // Writes a scalar variable-length UTF-8 string dataset.
   void write_string(const std::string& path, const std::string& value);
-  // Flushes and closes the file; errors surface here rather than in the destructor.
+  // Writes the finished file to path atomically; throws Error naming path and the system's reason
+  // if the write fails, leaving path as it was.
   void close();
 
  private:

@@ -79,7 +79,7 @@ DatasetSplit read_split_file(const fs::path& path) {
 void write_split_file(const DatasetSplit& split, const fs::path& path) {
   nlohmann::json json;
   for (const auto& [part, member] : kParts) json[part] = split.*member;
-  write_text_atomically(path, json.dump(2) + "\n");
+  write_file_atomically(path, json.dump(2) + "\n");
 }
 
 }  // namespace graspecmf::data

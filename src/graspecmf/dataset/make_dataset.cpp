@@ -133,7 +133,7 @@ void write_manifest(const MakeDatasetOptions& o, const std::vector<ObjectOutcome
                          {"software_version", kVersion},
                          {"options", options_json(o)},
                          {"results", objects}};
-  write_text_atomically(o.out / "manifest.json", manifest.dump(1) + "\n");
+  write_file_atomically(o.out / "manifest.json", manifest.dump(1) + "\n");
 }
 
 // A manifest's options as this version writes them: manifests written before pad_normal_inset
@@ -184,7 +184,7 @@ json with_repair_settings(json found, const json& expected) {
 }
 
 // Fails unless out can hold the dataset: creates the folders, refuses a folder made with other
-// options, and proves that files can be written there.
+// options, proves that files can be written there, and removes the temporary files of a killed run.
 void prepare_output(const MakeDatasetOptions& o) {
   std::error_code ec;
   fs::create_directories(o.out / "grasps", ec);
@@ -205,8 +205,9 @@ void prepare_output(const MakeDatasetOptions& o) {
                   " holds a dataset made with other options; choose another --out or remove it");
     }
   }
-  write_text_atomically(o.out / ".write-test", "ok\n");
+  write_file_atomically(o.out / ".write-test", "ok\n");
   fs::remove(o.out / ".write-test");
+  remove_temporary_files(o.out);
 }
 
 // The outcome recorded by an existing grasp file, or nothing if it cannot be read.
@@ -431,11 +432,14 @@ std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& o,
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     outcomes.push_back(r);
     if (!r.resumed) write_manifest(o, outcomes);
-    std::ofstream(o.out / kTimingLogName, std::ios::app)
-        << json{{"name", r.name},       {"resumed", r.resumed},   {"skipped", r.skipped},
-                {"seconds", r.seconds}, {"unstable", r.unstable}, {"threads", o.threads}}
-               .dump()
-        << "\n";
+    append_file_text(o.out / kTimingLogName, json{{"name", r.name},
+                                                  {"resumed", r.resumed},
+                                                  {"skipped", r.skipped},
+                                                  {"seconds", r.seconds},
+                                                  {"unstable", r.unstable},
+                                                  {"threads", o.threads}}
+                                                     .dump() +
+                                                 "\n");
     if (progress.trials && !r.resumed) progress.trials(std::min(per_object * made, total), total);
     if (progress.object) progress.object(r);
   }

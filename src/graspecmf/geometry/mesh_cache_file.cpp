@@ -87,12 +87,7 @@ void write_cache_file(const fs::path& path, std::string bytes) {
   Fnv1a hash;
   hash.add(bytes.data(), bytes.size());
   put_bytes(bytes, hash.value());
-  write_atomically(path, [&](const fs::path& tmp) {
-    std::ofstream out(tmp, std::ios::binary);
-    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-    out.flush();
-    if (!out) throw Error("cannot write " + path.string() + ": write failed");
-  });
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace graspecmf::geometry

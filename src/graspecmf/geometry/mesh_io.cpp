@@ -418,7 +418,7 @@ void write_mesh(const TriangleMesh& mesh, const fs::path& path) {
   }
   validate_mesh(mesh, "cannot write " + path.string());
   const std::string bytes = ext == ".obj" ? obj_text(mesh) : ply_bytes(mesh);
-  write_text_atomically(path, bytes);
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace graspecmf::geometry

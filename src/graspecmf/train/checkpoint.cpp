@@ -2,6 +2,8 @@
 
 #include <torch/serialize.h>
 
+#include <sstream>
+
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 
@@ -35,15 +37,17 @@ void read_module(torch::serialize::InputArchive& archive, const std::string& key
   }
 }
 
-// Writes the archive to path atomically, naming the path in any error.
+// Writes the archive to path atomically, naming the path in any error. The archive is serialised in
+// memory first, so that a disk error meets our checked writer, not LibTorch's (which can throw
+// from a destructor and terminate the process).
 void save_archive(torch::serialize::OutputArchive& archive, const fs::path& path) {
-  write_atomically(path, [&](const fs::path& tmp) {
-    try {
-      archive.save_to(tmp.string());
-    } catch (const c10::Error& e) {
-      throw Error(path.string() + ": cannot write " + e.what_without_backtrace());
-    }
-  });
+  std::ostringstream bytes;
+  try {
+    archive.save_to(bytes);
+  } catch (const c10::Error& e) {
+    throw Error(path.string() + ": cannot serialise " + e.what_without_backtrace());
+  }
+  write_file_atomically(path, bytes.str());
 }
 
 // The archive at path, its tensors on device; throws Error if the file is missing or unreadable.

@@ -1,8 +1,11 @@
 #include "graspecmf/train/train_config.hpp"
 
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
+#include <type_traits>
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/flow/sampler.hpp"
@@ -11,14 +14,37 @@ namespace graspecmf::train {
 using nlohmann::json;
 namespace {
 
-// Reads json[key] into value when present; a wrong type is an Error naming the key.
+// Reads json[key] into value when present; a wrong type is an Error naming the key. Integer
+// settings take only integers within the type's range (12.7 or -1 for a count is an error, not
+// 12 or 2^64 - 1).
 template <typename T>
 void read(const json& j, const char* key, T& value, const std::string& section) {
   if (!j.contains(key)) return;
-  try {
-    value = j.at(key).get<T>();
-  } catch (const json::exception&) {
-    throw Error("train config: " + section + key + " has the wrong type");
+  const json& v = j.at(key);
+  const std::string name = "train config: " + section + key;
+  if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
+    if (!v.is_number_integer()) throw Error(name + " must be an integer");
+    const bool in_range =
+        v.is_number_unsigned()
+            ? v.get<std::uint64_t>() <= std::uint64_t(std::numeric_limits<T>::max())
+            : std::is_signed_v<T> &&
+                  v.get<std::int64_t>() >= std::int64_t(std::numeric_limits<T>::min());
+    if (!in_range) throw Error(name + " is out of range");
+    value = v.get<T>();
+  } else if constexpr (std::is_same_v<T, std::vector<int64_t>>) {
+    if (!v.is_array()) throw Error(name + " must be a list of integers");
+    std::vector<int64_t> list;
+    for (const json& item : v) {
+      if (!item.is_number_integer()) throw Error(name + " must be a list of integers");
+      list.push_back(item.get<int64_t>());
+    }
+    value = list;
+  } else {
+    try {
+      value = v.get<T>();
+    } catch (const json::exception&) {
+      throw Error(name + " has the wrong type");
+    }
   }
 }
 
@@ -32,6 +58,10 @@ void only(const json& j, std::initializer_list<const char*> known, const std::st
   }
 }
 
+constexpr std::size_t kMaxLayers = 64;
+constexpr int64_t kMaxWidth = 4096;
+constexpr double kMaxTensorBytes = 16.0 * (1 << 30);
+
 }  // namespace
 
 double learning_rate_at(const TrainConfig& c, std::int64_t step) {
@@ -41,24 +71,40 @@ double learning_rate_at(const TrainConfig& c, std::int64_t step) {
 }
 
 void validate(const TrainConfig& c) {
-  const auto positive_widths = [](const std::vector<int64_t>& widths) {
-    return !widths.empty() &&
-           std::all_of(widths.begin(), widths.end(), [](int64_t w) { return w > 0; });
+  const auto widths_in_range = [](const std::vector<int64_t>& widths) {
+    return !widths.empty() && widths.size() <= kMaxLayers &&
+           std::all_of(widths.begin(), widths.end(),
+                       [](int64_t w) { return w > 0 && w <= kMaxWidth; });
   };
   const nn::EncoderOptions& e = c.model.encoder;
-  if (!positive_widths(e.widths)) throw Error("train config: encoder widths must be positive");
-  if (e.k < 1 || e.out_channels < 1 || e.points < e.k) {
-    throw Error("train config: need k ≥ 1, out_channels ≥ 1 and points ≥ k");
+  if (!widths_in_range(e.widths)) {
+    throw Error("train config: encoder widths must be 1 to 64 layers of 1 to 4096 channels");
   }
-  if (!positive_widths(c.model.field.hidden_widths)) {
-    throw Error("train config: field hidden_widths must be positive");
+  if (e.k < 1 || e.k > 256 || e.out_channels < 1 || e.out_channels > kMaxWidth || e.points < e.k ||
+      e.points > 100000) {
+    throw Error("train config: need 1 ≤ k ≤ 256, 1 ≤ out_channels ≤ 4096 and k ≤ points ≤ 100000");
   }
-  if (c.data.objects_per_step < 1) throw Error("train config: objects_per_step must be ≥ 1");
+  if (!widths_in_range(c.model.field.hidden_widths)) {
+    throw Error("train config: field hidden_widths must be 1 to 64 layers of 1 to 4096 channels");
+  }
+  if (c.data.objects_per_step < 1 || c.data.objects_per_step > 1024 ||
+      c.data.grasps_per_object > 100000) {
+    throw Error("train config: need 1 ≤ objects_per_step ≤ 1024 and grasps_per_object ≤ 100000");
+  }
+  const double edge_bytes =
+      12.0 * static_cast<double>(c.data.objects_per_step) * static_cast<double>(e.points) *
+      static_cast<double>(e.k) *
+      static_cast<double>(*std::max_element(e.widths.begin(), e.widths.end()));
+  if (edge_bytes > kMaxTensorBytes) {
+    throw Error("train config: one encoder layer would need about " +
+                std::to_string(static_cast<long long>(edge_bytes / (1 << 20))) +
+                " MiB (objects_per_step × points × k × width × 12 bytes; the limit is 16 GiB)");
+  }
   if (!(c.data.position_scale > 0)) throw Error("train config: position_scale must be > 0");
   if (!(c.data.stretch >= 0 && c.data.stretch < 0.5)) {
     throw Error("train config: data.stretch must be in [0, 0.5)");
   }
-  if (c.steps < 1) throw Error("train config: steps must be ≥ 1");
+  if (c.steps < 1 || c.steps > 1000000000) throw Error("train config: steps must be in [1, 10^9]");
   if (!(c.learning_rate > 0) || !(c.weight_decay >= 0)) {
     throw Error("train config: learning_rate must be > 0 and weight_decay ≥ 0");
   }
@@ -73,11 +119,17 @@ void validate(const TrainConfig& c) {
   if (c.log_every < 1 || c.checkpoint_every < 1 || c.validate_every < 0) {
     throw Error("train config: log_every and checkpoint_every must be ≥ 1, validate_every ≥ 0");
   }
-  if (c.validation_grasps < 1) throw Error("train config: validation_grasps must be ≥ 1");
+  if (c.validation_grasps < 1 || c.validation_grasps > 100000) {
+    throw Error("train config: validation_grasps must be in [1, 100000]");
+  }
   flow::parse_solver(c.sampling.solver);
-  if (c.sampling.steps < 1) throw Error("train config: sampling steps must be ≥ 1");
+  if (c.sampling.steps < 1 || c.sampling.steps > 10000) {
+    throw Error("train config: sampling steps must be in [1, 10000]");
+  }
   if (!std::isfinite(c.sampling.guidance)) throw Error("train config: guidance must be finite");
-  if (c.sampling.clouds < 1) throw Error("train config: sampling clouds must be ≥ 1");
+  if (c.sampling.clouds < 1 || c.sampling.clouds > 1024) {
+    throw Error("train config: sampling clouds must be in [1, 1024]");
+  }
 }
 
 json to_json(const TrainConfig& c) {

@@ -141,10 +141,11 @@ void blend_weights(const nn::GraspFlowModel& average, const nn::GraspFlowModel& 
 }
 
 void append_line(const fs::path& path, const json& record) {
-  std::ofstream(path, std::ios::app) << record.dump() << "\n";
+  append_file_text(path, record.dump() + "\n");
 }
 
-// Drops log records past the checkpoint (written by a run killed after its last checkpoint).
+// Drops log records past the checkpoint's step, 0 without one (written by a run killed after its
+// last checkpoint, or before its first).
 void truncate_log(const fs::path& path, std::int64_t step) {
   if (!fs::exists(path)) return;
   std::ifstream in(path);
@@ -153,14 +154,16 @@ void truncate_log(const fs::path& path, std::int64_t step) {
     const json record = json::parse(line, nullptr, false);
     if (record.is_object() && record.value("step", std::int64_t{0}) <= step) kept += line + "\n";
   }
-  write_text_atomically(path, kept);
+  write_file_atomically(path, kept);
 }
 
-// Creates the run folder, or checks that it holds this configuration.
+// Creates the run folder, or checks that it holds this configuration and removes the temporary
+// files of a killed run.
 void prepare_run(const fs::path& run_dir, const TrainConfig& config) {
   std::error_code ec;
   fs::create_directories(run_dir, ec);
   if (ec) throw Error(run_dir.string() + ": cannot create the run folder (" + ec.message() + ")");
+  remove_temporary_files(run_dir);
   const fs::path file = run_dir / kConfigFile;
   if (fs::exists(file)) {
     if (to_json(read_train_config(file)) != to_json(config)) {
@@ -169,7 +172,7 @@ void prepare_run(const fs::path& run_dir, const TrainConfig& config) {
     }
     return;
   }
-  write_text_atomically(file, to_json(config).dump(2) + "\n");
+  write_file_atomically(file, to_json(config).dump(2) + "\n");
 }
 
 }  // namespace
@@ -210,8 +213,8 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
     sampler.restore(state.sampler_state);
     generator.set_state(state.generator);
     result.resumed_from = state.step;
-    truncate_log(run_dir / kLogFile, state.step);
   }
+  truncate_log(run_dir / kLogFile, result.resumed_from);
   const auto save = [&](std::int64_t step) {
     save_checkpoint(checkpoint, *model, optimizer, {step, sampler.state(), generator.get_state()},
                     average ? average.get() : nullptr);
@@ -292,9 +295,13 @@ std::int64_t export_model(const fs::path& run_dir, const fs::path& out_dir) {
   std::error_code ec;
   fs::create_directories(out_dir, ec);
   if (ec) throw Error(out_dir.string() + ": cannot create the folder (" + ec.message() + ")");
-  write_text_atomically(out_dir / kConfigFile, to_json(trained.config).dump(2) + "\n");
+  write_file_atomically(out_dir / kConfigFile, to_json(trained.config).dump(2) + "\n");
   save_weights(out_dir / kWeightsFile, *trained.model, trained.step);
   return trained.step;
+}
+
+std::vector<fs::path> model_folder_files(const fs::path& dir) {
+  return {dir / kConfigFile, dir / kCheckpointFile, dir / kWeightsFile, dir / kLogFile};
 }
 
 }  // namespace graspecmf::train

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json_fwd.hpp>
+#include <vector>
 
 #include "graspecmf/train/train_config.hpp"
 
@@ -54,5 +55,9 @@ TrainedModel load_trained_model(const std::filesystem::path& run_dir,
 // Throws Error if the run cannot be loaded or out_dir cannot be written.
 std::int64_t export_model(const std::filesystem::path& run_dir,
                           const std::filesystem::path& out_dir);
+
+// The files a run or model folder may hold (config, checkpoint, weights, log): the paths an
+// output must never take.
+std::vector<std::filesystem::path> model_folder_files(const std::filesystem::path& dir);
 
 }  // namespace graspecmf::train

@@ -155,12 +155,16 @@ Image contact_sheet(const std::vector<Image>& images, int columns) {
 }
 
 void write_png(const Image& image, const std::filesystem::path& path) {
-  write_atomically(path, [&](const std::filesystem::path& tmp) {
-    if (stbi_write_png(tmp.c_str(), image.width, image.height, 3, image.rgb.data(),
-                       3 * image.width) == 0) {
-      throw Error("cannot write PNG " + path.string());
-    }
-  });
+  std::string bytes;
+  const auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data),
+                                               static_cast<std::size_t>(size));
+  };
+  if (stbi_write_png_to_func(append, &bytes, image.width, image.height, 3, image.rgb.data(),
+                             3 * image.width) == 0) {
+    throw Error("cannot encode PNG " + path.string());
+  }
+  write_file_atomically(path, bytes);
 }
 
 }  // namespace graspecmf::viz
