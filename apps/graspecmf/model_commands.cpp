@@ -184,6 +184,7 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
     }
     cloud.resize(std::min(cloud.size(), points));
     info.file = a.points;
+    info.scale = a.units.metres_per_unit();  // the output says how the file's units map to metres
     input.cloud = std::move(cloud);
     return input;
   }

@@ -131,6 +131,23 @@ TEST(CliModel, TrainSampleEvaluate) {
               graspecmf::gripper::kMinGraspDepth);
   }
 
+  // The same cloud in centimetres with --units cm: the same grasps, and the file records the scale.
+  std::ofstream filled_cm(dir / "filled-cm.xyz");
+  for (const Eigen::Vector3d& p : cube) filled_cm << (100.0 * p).transpose() << "\n";
+  filled_cm.close();
+  const std::string out_cm = (dir / "grasps-cm.h5").string();
+  ASSERT_EQ(run("sample --model " + run_dir + " --points " + (dir / "filled-cm.xyz").string() +
+                    " --units cm --num 7 --seed 3 --reject-shallow --out " + out_cm,
+                dir)
+                .exit_code,
+            0);
+  const graspecmf::data::AcronymGraspFile cm_record = graspecmf::data::read_acronym_file(out_cm);
+  EXPECT_DOUBLE_EQ(cm_record.object.scale, 0.01);
+  ASSERT_EQ(cm_record.size(), 7u);
+  for (std::size_t i = 0; i < 7; ++i) {
+    EXPECT_TRUE(cm_record.transforms[i].isApprox(deep_record.transforms[i], 1e-6)) << i;
+  }
+
   const auto evaluated =
       run("evaluate --model " + run_dir + " --data " + data.string() +
               " --split val --num 4 --baselines --solver euler --steps 3 --guidance 1.5 --out " +

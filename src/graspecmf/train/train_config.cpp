@@ -24,11 +24,12 @@ void read(const json& j, const char* key, T& value, const std::string& section) 
   const std::string name = "train config: " + section + key;
   if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
     if (!v.is_number_integer()) throw Error(name + " must be an integer");
+    constexpr auto kMax = static_cast<std::uint64_t>(std::numeric_limits<T>::max());
+    const bool negative = !v.is_number_unsigned() && v.get<std::int64_t>() < 0;
     const bool in_range =
-        v.is_number_unsigned()
-            ? v.get<std::uint64_t>() <= std::uint64_t(std::numeric_limits<T>::max())
-            : std::is_signed_v<T> &&
-                  v.get<std::int64_t>() >= std::int64_t(std::numeric_limits<T>::min());
+        negative ? std::is_signed_v<T> &&
+                       v.get<std::int64_t>() >= std::int64_t{std::numeric_limits<T>::min()}
+                 : v.get<std::uint64_t>() <= kMax;
     if (!in_range) throw Error(name + " is out of range");
     value = v.get<T>();
   } else if constexpr (std::is_same_v<T, std::vector<int64_t>>) {
