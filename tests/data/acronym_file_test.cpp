@@ -181,6 +181,24 @@ TEST(AcronymFile, NonRigidTransformsAndOtherLabelsAreRefused) {
   }
 }
 
+TEST(AcronymFile, MassPropertiesMustBePositiveAndFinite) {
+  ScratchDir dir;
+  const AcronymGraspFile sample = read_acronym_file(sample_grasp_file());
+  ASSERT_TRUE(sample.object.mass && sample.object.inertia);
+  AcronymGraspFile record = sample;
+  record.object.mass = -0.1;
+  write_acronym_file(record, dir / "mass.h5");
+  expect_error([&] { read_acronym_file(dir / "mass.h5"); }, "/object/mass must be a positive");
+  record = sample;
+  record.object.density = 0.0;
+  write_acronym_file(record, dir / "density.h5");
+  expect_error([&] { read_acronym_file(dir / "density.h5"); }, "/object/density");
+  record = sample;
+  *record.object.inertia = -*record.object.inertia;
+  write_acronym_file(record, dir / "inertia.h5");
+  expect_error([&] { read_acronym_file(dir / "inertia.h5"); }, "/object/inertia");
+}
+
 TEST(AcronymFile, LabelCountMustMatchGraspCount) {
   ScratchDir dir;
   AcronymGraspFile record = read_acronym_file(sample_grasp_file());

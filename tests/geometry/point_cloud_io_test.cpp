@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
 #include "test_support.hpp"
 
 namespace graspecmf::geometry {
@@ -82,6 +83,21 @@ TEST(PointCloudIo, ReadsAsciiAndBinaryPlyWithOtherProperties) {
   expect_points(read_point_cloud(dir / "b.ply"), 1e-6);
   write_file(dir / "cut.ply", binary.substr(0, binary.size() - 2));
   EXPECT_THROW(read_point_cloud(dir / "cut.ply"), Error);
+}
+
+// A tiny binary PLY whose header declares a billion vertices and faces: refused before any
+// allocation, as a cloud and as a mesh.
+TEST(PointCloudIo, PlyDeclaringMoreThanItHoldsIsRefused) {
+  const ScratchDir dir;
+  write_file(dir / "huge.ply",
+             "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000\n"
+             "property float x\nproperty float y\nproperty float z\nelement face 1000000000\n"
+             "property list uchar int vertex_indices\nend_header\n" +
+                 std::string(36, '\0'));
+  graspecmf::testing::expect_error([&] { read_point_cloud(dir / "huge.ply"); },
+                                   "declares more data than the file holds (36 bytes");
+  graspecmf::testing::expect_error([&] { read_mesh(dir / "huge.ply"); },
+                                   "declares more data than the file holds");
 }
 
 TEST(PointCloudIo, BadFilesAreOneClearError) {

@@ -7,6 +7,7 @@
 
 #include "box_object.hpp"
 #include "graspecmf/core/error.hpp"
+#include "test_support.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -76,6 +77,14 @@ TEST(TrialConfig, JsonRoundTripAndValidation) {
   EXPECT_TRUE(trial_config_from_json(nlohmann::json{{"mujoco_convex", true}}).mujoco_convex);
   EXPECT_FALSE(trial_config_from_json(to_json(TrialConfig{})).mujoco_convex);
   EXPECT_THROW(trial_config_from_json(nlohmann::json{{"mujoco_convex", 1}}), Error);
+  // A trial of more than a million steps is refused before it starts.
+  graspecmf::testing::expect_error(
+      [] {
+        trial_config_from_json(nlohmann::json{{"timestep", 1e-9}, {"contact_timeconst", 1e-8}});
+      },
+      "at most 1000000");
+  EXPECT_NO_THROW(
+      trial_config_from_json(nlohmann::json{{"timestep", 1e-5}, {"contact_timeconst", 1e-4}}));
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "graspecmf/data/acronym_file.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/hdf5_file.hpp"
@@ -200,6 +201,18 @@ AcronymGraspFile read_acronym_file(const fs::path& path) {
   object.volume = read_optional_double(file, "object/volume");
   object.com = read_optional_matrix<3, 1>(file, path, "object/com");
   object.inertia = read_optional_matrix<3, 3>(file, path, "object/inertia");
+  for (const auto& [name, value] : {std::pair{"density", object.density},
+                                    {"friction", object.friction},
+                                    {"mass", object.mass},
+                                    {"volume", object.volume}}) {
+    if (value && !(std::isfinite(*value) && *value > 0)) {
+      throw Error(path.string() + ": /object/" + name + " must be a positive number, not " +
+                  std::to_string(*value));
+    }
+  }
+  if (object.inertia && !(object.inertia->allFinite() && object.inertia->trace() > 0)) {
+    throw Error(path.string() + ": /object/inertia must be finite with a positive trace");
+  }
   return record;
 }
 

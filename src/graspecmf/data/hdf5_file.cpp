@@ -25,6 +25,11 @@ void silence_hdf5_errors() {
   (void)silenced;
 }
 
+// Reading a dataset whose declared size exceeds kMaxExpansion × its stored bytes + kSmallDataset
+// is refused (deflate's best ratio is about 1032:1).
+constexpr double kMaxExpansion = 1100.0;
+constexpr double kSmallDataset = 1 << 20;
+
 std::size_t element_count(const Shape& shape) {
   return std::accumulate(shape.begin(), shape.end(), std::size_t{1}, std::multiplies<>());
 }
@@ -111,6 +116,16 @@ struct Hdf5Reader::Impl {
         throw Error(path.string() + ": /" + name + " is not numeric");
       }
       const hssize_t n = ds.getSpace().getSimpleExtentNpoints();
+      // Refuse extents the stored bytes cannot hold before allocating: deflate expands at most
+      // about 1032:1, and a dataset declared over unallocated chunks would read fill values.
+      const double declared =
+          static_cast<double>(n) * static_cast<double>(ds.getDataType().getSize());
+      const double stored = static_cast<double>(ds.getStorageSize());
+      if (declared > kMaxExpansion * stored + kSmallDataset) {
+        throw Error(path.string() + ": /" + name + " declares " + std::to_string(n) +
+                    " values but stores only " + std::to_string(ds.getStorageSize()) +
+                    " bytes; the file is damaged or not what it claims");
+      }
       std::vector<T> values(static_cast<std::size_t>(n));
       if (n > 0) ds.read(values.data(), type);
       return values;

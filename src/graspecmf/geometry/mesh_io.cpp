@@ -23,6 +23,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/ply_header.hpp"
 
 namespace graspecmf::geometry {
 namespace fs = std::filesystem;
@@ -267,7 +268,18 @@ TriangleMesh read_obj(const fs::path& path) {
 
 // ---- STL, PLY and glTF through assimp ----
 
+// Refuses a PLY file whose header declares more vertices or faces than the file can hold, before
+// assimp allocates for them.
+void check_ply_sizes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string head(64 * 1024, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  read_ply_header(path, head, fs::file_size(path));
+}
+
 TriangleMesh read_with_assimp(const fs::path& path) {
+  if (lower_extension(path) == ".ply") check_ply_sizes(path);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
       path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |

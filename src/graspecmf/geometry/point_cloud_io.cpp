@@ -9,6 +9,7 @@
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/ply_header.hpp"
 
 namespace graspecmf::geometry {
 namespace fs = std::filesystem;
@@ -92,65 +93,20 @@ std::vector<Vec3> read_npy(const fs::path& path, const std::string& bytes) {
   return points;
 }
 
-struct PlyProperty {
-  std::string name;
-  std::size_t size = 0;  // bytes in binary files
-  bool floating = false;
-};
-
-std::size_t ply_type_size(const std::string& type) {
-  if (type == "char" || type == "uchar" || type == "int8" || type == "uint8") return 1;
-  if (type == "short" || type == "ushort" || type == "int16" || type == "uint16") return 2;
-  if (type == "int" || type == "uint" || type == "float" || type == "int32" || type == "uint32" ||
-      type == "float32") {
-    return 4;
-  }
-  if (type == "double" || type == "float64") return 8;
-  return 0;
-}
-
 std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
   const auto fail = [&](const std::string& why) { return Error(path.string() + ": " + why); };
-  const std::size_t end = bytes.find("end_header\n");
-  if (bytes.compare(0, 4, "ply\n") != 0 || end == std::string::npos) throw fail("not a PLY file");
-  std::istringstream header(bytes.substr(0, end));
-  std::string line, format;
-  std::size_t count = 0;
-  bool in_vertex = false, vertex_seen = false;
-  std::vector<PlyProperty> properties;
-  while (std::getline(header, line)) {
-    std::istringstream words(line);
-    std::string keyword;
-    words >> keyword;
-    if (keyword == "format") {
-      words >> format;
-    } else if (keyword == "element") {
-      std::string name;
-      words >> name;
-      if (vertex_seen && !in_vertex) continue;
-      in_vertex = name == "vertex";
-      if (in_vertex) {
-        words >> count;
-        vertex_seen = true;
-      } else if (!vertex_seen) {
-        throw fail("PLY elements before the vertices are not supported");
-      }
-    } else if (keyword == "property" && in_vertex) {
-      std::string type, name;
-      words >> type >> name;
-      if (type == "list") throw fail("PLY vertex list properties are not supported");
-      const std::size_t size = ply_type_size(type);
-      if (size == 0) throw fail("unknown PLY property type " + type);
-      properties.push_back(
-          {name, size,
-           type == "float" || type == "float32" || type == "double" || type == "float64"});
-    }
-  }
-  if (format != "ascii" && format != "binary_little_endian") {
+  const PlyHeader header = read_ply_header(path, bytes, bytes.size());
+  if (header.format == "binary_big_endian") {
     throw fail("PLY format must be ascii or binary_little_endian");
   }
+  if (header.elements.empty() || header.elements.front().name != "vertex") {
+    throw fail("PLY elements before the vertices are not supported");
+  }
+  const std::vector<PlyProperty>& properties = header.elements.front().properties;
+  const std::size_t count = static_cast<std::size_t>(header.elements.front().count);
   int axis[3] = {-1, -1, -1};
   for (std::size_t i = 0; i < properties.size(); ++i) {
+    if (properties[i].count_size > 0) throw fail("PLY vertex list properties are not supported");
     for (int k = 0; k < 3; ++k) {
       if (properties[i].name == std::string(1, static_cast<char>('x' + k))) {
         if (!properties[i].floating) throw fail("PLY x, y, z must be float or double");
@@ -160,8 +116,8 @@ std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
   }
   if (axis[0] < 0 || axis[1] < 0 || axis[2] < 0) throw fail("PLY vertices need x, y and z");
   std::vector<Vec3> points(count);
-  const std::size_t data_start = end + std::strlen("end_header\n");
-  if (format == "ascii") {
+  const std::size_t data_start = header.data_start;
+  if (header.format == "ascii") {
     std::istringstream body(bytes.substr(data_start));
     for (Vec3& p : points) {
       std::vector<double> values(properties.size());

@@ -60,6 +60,9 @@ struct Switch {
 constexpr Switch kSwitches[] = {{"mujoco_convex", &TrialConfig::mujoco_convex},
                                 {"legacy_object_frame", &TrialConfig::legacy_object_frame}};
 
+// Steps one trial may take (the defaults take 1200): a bound on the time a config can cost.
+constexpr double kMaxTrialSteps = 1e6;
+
 }  // namespace
 
 void validate(const TrialConfig& config) {
@@ -77,6 +80,12 @@ void validate(const TrialConfig& config) {
     }
   }
   if (config.timestep > 0.01) throw Error("trial config: timestep must be at most 0.01 s");
+  const double duration = config.close_duration + config.settle_duration + config.lift_duration +
+                          config.shake_cycles / config.shake_frequency;
+  if (duration / config.timestep > kMaxTrialSteps) {
+    throw Error("trial config: a trial would take " + std::to_string(duration / config.timestep) +
+                " steps (phase durations / timestep); at most 1000000 are allowed");
+  }
   if (config.contact_timeconst < 2.0 * config.timestep) {
     throw Error("trial config: contact_timeconst must be at least 2 × timestep");
   }
