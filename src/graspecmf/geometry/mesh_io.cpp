@@ -275,7 +275,11 @@ void check_ply_sizes(const fs::path& path) {
   std::string head(64 * 1024, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  read_ply_header(path, head, fs::file_size(path));
+  try {
+    read_ply_header(path, head, fs::file_size(path));
+  } catch (const Error& e) {
+    throw Error(std::string("cannot read ") + e.what());  // "<path>: <why>", as fail_read says
+  }
 }
 
 TriangleMesh read_with_assimp(const fs::path& path) {
