@@ -207,12 +207,13 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
 }
 
 void run_sample(const SampleArgs& a) {
-  std::vector<fs::path> inputs = train::model_folder_files(model_or_bundled(a.model));
+  const fs::path model = model_or_bundled(a.model);
+  std::vector<fs::path> inputs = train::model_folder_files(model);
   inputs.insert(inputs.end(), {a.mesh, a.points, a.acronym});
   require_distinct_output("--out", a.out, inputs);
   at::set_num_threads(a.threads);
   const train::TrainedModel trained =
-      train::load_trained_model(model_or_bundled(a.model), train::parse_device(a.device));
+      train::load_trained_model(model, train::parse_device(a.device));
   const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   const auto clouds = static_cast<std::size_t>(settings.clouds);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
@@ -278,6 +279,7 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
   }
   if (!a.acronym.empty()) {
     const data::AcronymGraspFile record = data::read_acronym_file(a.acronym);
+    data::require_panda_gripper(record, a.acronym);
     data::GraspObject object;
     object.name = fs::path(a.acronym).stem().string();
     object.mesh = geometry::scaled(

@@ -75,10 +75,7 @@ void run(const SimulateOptions& o) {
   require_distinct_output("--out", o.out, {o.grasp_file, o.config_file});
   const sim::TrialConfig config = sim::read_trial_config(o.config_file);
   const data::AcronymGraspFile record = data::read_acronym_file(o.grasp_file);
-  if (record.gripper_type != "franka_panda" && record.gripper_type != "panda") {
-    throw Error(o.grasp_file + ": gripper type '" + record.gripper_type +
-                "' cannot be simulated (only the Franka Panda hand: franka_panda or panda)");
-  }
+  data::require_panda_gripper(record, o.grasp_file);
   if (o.compare_labels && !record.qualities) {
     throw Error(o.grasp_file + ": --compare-labels needs the file's object_in_gripper labels");
   }

@@ -199,6 +199,14 @@ TEST(AcronymFile, MassPropertiesMustBePositiveAndFinite) {
   expect_error([&] { read_acronym_file(dir / "inertia.h5"); }, "/object/inertia");
 }
 
+TEST(AcronymFile, OnlyThePandaGripperIsSupported) {
+  AcronymGraspFile record = read_acronym_file(sample_grasp_file());
+  require_panda_gripper(record, sample_grasp_file());  // "franka_panda"
+  record.gripper_type = "robotiq_2f_85";
+  expect_error([&] { require_panda_gripper(record, "r.h5"); },
+               "r.h5: gripper type 'robotiq_2f_85' is not supported");
+}
+
 TEST(AcronymFile, LabelCountMustMatchGraspCount) {
   ScratchDir dir;
   AcronymGraspFile record = read_acronym_file(sample_grasp_file());

@@ -71,11 +71,7 @@ void write_atomically(const fs::path& target, const std::function<void(const fs:
 }
 
 void write_file_atomically(const fs::path& target, std::string_view bytes) {
-  write_atomically(target, [&](const fs::path& tmp) { write_file_bytes(tmp, bytes, target); });
-}
-
-void write_file_bytes(const fs::path& path, std::string_view bytes, const fs::path& shown_as) {
-  put_bytes(path, O_TRUNC, bytes, shown_as.empty() ? path : shown_as);
+  write_atomically(target, [&](const fs::path& tmp) { put_bytes(tmp, O_TRUNC, bytes, target); });
 }
 
 void append_file_text(const fs::path& path, std::string_view text) {

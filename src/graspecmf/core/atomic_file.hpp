@@ -15,16 +15,12 @@ namespace graspecmf {
 void write_atomically(const std::filesystem::path& target,
                       const std::function<void(const std::filesystem::path& tmp)>& write);
 
-// Writes bytes (text or binary) to target atomically.
+// Writes bytes (text or binary) to target atomically, every write and the close checked; throws
+// Error "cannot write <target>: <system reason>" (e.g. "No space left on device").
 void write_file_atomically(const std::filesystem::path& target, std::string_view bytes);
 
-// Creates (truncates) path and writes bytes to it with every write and the close checked; throws
-// Error "cannot write <shown_as>: <system reason>" (shown_as defaults to path) on any failure.
-void write_file_bytes(const std::filesystem::path& path, std::string_view bytes,
-                      const std::filesystem::path& shown_as = {});
-
-// Appends text to path (created if missing), checked like write_file_bytes. A failed append may
-// leave part of text in the file.
+// Appends text to path (created if missing), every write and the close checked; throws Error
+// "cannot write <path>: <system reason>". A failed append may leave part of text in the file.
 void append_file_text(const std::filesystem::path& path, std::string_view text);
 
 // Removes the temporary files that write_atomically leaves when its process is killed, in folder

@@ -250,6 +250,13 @@ void write_acronym_file(const AcronymGraspFile& record, const fs::path& path) {
   writer.close();
 }
 
+void require_panda_gripper(const AcronymGraspFile& record, const fs::path& path) {
+  if (record.gripper_type != "franka_panda" && record.gripper_type != "panda") {
+    throw Error(path.string() + ": gripper type '" + record.gripper_type +
+                "' is not supported (only the Franka Panda hand: franka_panda or panda)");
+  }
+}
+
 Mat3 standard_inertia(const Mat3& acronym_inertia) {
   Mat3 standard = -acronym_inertia;
   standard.diagonal() = acronym_inertia.diagonal();

@@ -54,6 +54,10 @@ AcronymGraspFile read_acronym_file(const std::filesystem::path& path);
 // one). Throws Error if array lengths disagree or a number is not finite.
 void write_acronym_file(const AcronymGraspFile& record, const std::filesystem::path& path);
 
+// Throws Error naming path unless the record's grasps are for the Franka Panda hand ("franka_panda"
+// or "panda"), the only gripper graspecmf simulates and trains for.
+void require_panda_gripper(const AcronymGraspFile& record, const std::filesystem::path& path);
+
 // The standard inertia tensor (positive off-diagonal = −∫xy dm) from ACRONYM's stored one, whose
 // off-diagonal entries carry the opposite sign.
 Mat3 standard_inertia(const Mat3& acronym_inertia);

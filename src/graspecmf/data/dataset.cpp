@@ -100,6 +100,7 @@ std::vector<ObjectEntry> AcronymDataset::select(const std::vector<std::string>& 
 
 GraspObject AcronymDataset::load(const ObjectEntry& entry) {
   const AcronymGraspFile record = read_acronym_file(entry.grasp_file);
+  require_panda_gripper(record, entry.grasp_file);
   return {entry.name, geometry::scaled(geometry::read_mesh(entry.mesh_file), record.object.scale),
           record.successful_grasps(), record.object};
 }
