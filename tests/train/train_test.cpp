@@ -23,6 +23,7 @@ namespace graspecmf::train {
 namespace {
 
 namespace fs = std::filesystem;
+using graspecmf::testing::expect_error;
 using graspecmf::testing::read_file;
 using graspecmf::testing::ScratchDir;
 using graspecmf::testing::tiny_dataset;
@@ -381,6 +382,48 @@ TEST(Trainer, BadInputIsOneClearError) {
   every_layer.model.field.z_every_layer = true;
   std::ofstream(dir / "mismatch/config.json") << to_json(every_layer).dump();
   EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
+}
+
+// Flips the sign bit of every parameter's first float in the file at path (tensors are stored
+// uncompressed, so their bytes appear verbatim).
+void flip_first_sign_bits(const fs::path& path, const nn::GraspFlowModel& model) {
+  std::string bytes = read_file(path);
+  for (const at::Tensor& p : model->parameters()) {
+    const at::Tensor values = p.detach().flatten().contiguous();
+    const std::string pattern(static_cast<const char*>(values.data_ptr()),
+                              std::min<std::size_t>(values.nbytes(), 16));
+    const std::size_t at = bytes.find(pattern);
+    ASSERT_NE(at, std::string::npos);
+    bytes[at + 3] = static_cast<char>(bytes[at + 3] ^ 0x80);
+  }
+  graspecmf::testing::write_file(path, bytes);
+}
+
+TEST(Checkpoint, DamageIsFoundByTheContentHash) {
+  const ScratchDir dir;
+  const TrainConfig config = tiny_config();
+  train(config, tiny_dataset(dir), dir / "run", 1);
+  const TrainedModel trained = load_trained_model(dir / "run");
+  save_weights(dir / "weights.pt", *trained.model, 6);
+  nn::GraspFlowModel model(config.model);
+  EXPECT_EQ(load_weights(dir / "weights.pt", *model), 6);
+  EXPECT_TRUE(torch::equal(flat_parameters(model), flat_parameters(trained.model)));
+  // One sign bit flipped in each weight tensor: the archive still loads, the hash refuses it.
+  fs::copy_file(dir / "run/checkpoint.pt", dir / "flipped.pt");
+  flip_first_sign_bits(dir / "weights.pt", trained.model);
+  flip_first_sign_bits(dir / "flipped.pt", trained.model);
+  expect_error([&] { load_weights(dir / "weights.pt", *model); }, "weights.pt: damaged");
+  expect_error([&] { load_checkpoint(dir / "flipped.pt", *model); }, "flipped.pt: damaged");
+  // A truncated file, and an archive written without a content hash, are refused by name.
+  const std::string whole = read_file(dir / "run/checkpoint.pt");
+  graspecmf::testing::write_file(dir / "truncated.pt", whole.substr(0, whole.size() / 2));
+  expect_error([&] { load_checkpoint(dir / "truncated.pt", *model); },
+               "truncated.pt: unreadable or damaged (");
+  torch::serialize::OutputArchive unhashed, weights;
+  model->save(weights);
+  unhashed.write("weights", weights);
+  unhashed.save_to((dir / "unhashed.pt").string());
+  expect_error([&] { load_weights(dir / "unhashed.pt", *model); }, "carries no content hash");
 }
 
 TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {

@@ -2,10 +2,12 @@
 
 #include <torch/serialize.h>
 
+#include <algorithm>
 #include <sstream>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/fnv1a.hpp"
 
 namespace graspecmf::train {
 namespace fs = std::filesystem;
@@ -37,12 +39,50 @@ void read_module(torch::serialize::InputArchive& archive, const std::string& key
   }
 }
 
-// Writes the archive to path atomically, naming the path in any error. The archive is serialised in
-// memory first, so that a disk error meets our checked writer, not LibTorch's (which can throw
-// from a destructor and terminate the process).
+// The archive entry holding the content hash of every other entry.
+constexpr const char* kHashKey = "content_hash";
+
+// Adds every tensor under archive (path name, type, shape, bytes), in key order, to hash; the top
+// level's own content hash entry is left out.
+void hash_archive(torch::serialize::InputArchive& archive, const std::string& prefix, Fnv1a& hash) {
+  std::vector<std::string> keys = archive.keys();
+  std::sort(keys.begin(), keys.end());
+  for (const std::string& key : keys) {
+    if (prefix.empty() && key == kHashKey) continue;
+    const std::string name = prefix + key;
+    at::Tensor tensor;
+    torch::serialize::InputArchive child;
+    if (archive.try_read(key, tensor)) {
+      tensor = tensor.cpu().contiguous();
+      hash.add(name.c_str(), name.size() + 1);
+      hash.add_value(static_cast<int>(tensor.scalar_type()));
+      for (const int64_t size : tensor.sizes()) hash.add_value(size);
+      hash.add(tensor.data_ptr(), tensor.nbytes());
+    } else if (archive.try_read(key, child)) {
+      hash_archive(child, name + "/", hash);
+    }
+  }
+}
+
+// The content hash of a serialised archive's tensors.
+int64_t content_hash(const std::string& bytes) {
+  std::istringstream in(bytes);
+  torch::serialize::InputArchive archive;
+  archive.load_from(in);
+  Fnv1a hash;
+  hash_archive(archive, "", hash);
+  return static_cast<int64_t>(hash.value());
+}
+
+// Writes the archive, with the content hash of its tensors, to path atomically, naming the path in
+// any error. The archive is serialised in memory first, so that a disk error meets our checked
+// writer, not LibTorch's (which can throw from a destructor and terminate the process).
 void save_archive(torch::serialize::OutputArchive& archive, const fs::path& path) {
   std::ostringstream bytes;
   try {
+    archive.save_to(bytes);
+    archive.write(kHashKey, torch::tensor({content_hash(bytes.str())}, torch::kLong));
+    bytes.str("");
     archive.save_to(bytes);
   } catch (const c10::Error& e) {
     throw Error(path.string() + ": cannot serialise " + e.what_without_backtrace());
@@ -50,14 +90,28 @@ void save_archive(torch::serialize::OutputArchive& archive, const fs::path& path
   write_file_atomically(path, bytes.str());
 }
 
-// The archive at path, its tensors on device; throws Error if the file is missing or unreadable.
+// The archive at path, its tensors on device, after checking its content hash; throws Error if the
+// file is missing, unreadable or damaged.
 torch::serialize::InputArchive load_archive(const fs::path& path, c10::Device device) {
   if (!fs::exists(path)) throw Error(path.string() + ": no such file");
   torch::serialize::InputArchive archive;
+  at::Tensor stored;
+  Fnv1a hash;
   try {
     archive.load_from(path.string(), device);
+    if (!archive.try_read(kHashKey, stored)) {
+      throw Error(path.string() +
+                  ": carries no content hash, so damage cannot be detected (written before "
+                  "graspecmf hashed its checkpoints); train or export it again");
+    }
+    hash_archive(archive, "", hash);
   } catch (const c10::Error& e) {
     throw Error(path.string() + ": unreadable or damaged (" + e.what_without_backtrace() + ")");
+  }
+  if (stored.numel() != 1 || stored.scalar_type() != torch::kLong ||
+      stored.item<int64_t>() != static_cast<int64_t>(hash.value())) {
+    throw Error(path.string() +
+                ": damaged: its tensors do not match the content hash written with them");
   }
   return archive;
 }
@@ -90,11 +144,9 @@ void save_checkpoint(const fs::path& path, const torch::nn::Module& model,
 void load_checkpoint(const fs::path& path, torch::nn::Module& model,
                      torch::optim::Optimizer* optimizer, TrainingState* state,
                      torch::nn::Module* average) {
-  if (!fs::exists(path)) throw Error(path.string() + ": no such checkpoint");
+  // Tensors land on the model's device, whichever device saved them.
+  torch::serialize::InputArchive archive = load_archive(path, model.parameters().front().device());
   try {
-    // Tensors land on the model's device, whichever device saved them.
-    torch::serialize::InputArchive archive;
-    archive.load_from(path.string(), model.parameters().front().device());
     at::Tensor count;
     archive.read("tensor_count", count);
     read_module(archive, "model", model, count, path);
