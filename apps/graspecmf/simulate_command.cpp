@@ -7,11 +7,13 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <thread>
 #include <vector>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/core/progress.hpp"
 #include "graspecmf/core/version.hpp"
@@ -73,6 +75,8 @@ data::AcronymGraspFile labelled_record(const data::AcronymGraspFile& record,
 
 void run(const SimulateOptions& o) {
   require_distinct_output("--out", o.out, {o.grasp_file, o.config_file});
+  std::optional<OutputLock> lock;  // held until the labels are written
+  if (!o.out.empty()) lock.emplace(OutputLock::file(o.out));
   const sim::TrialConfig config = sim::read_trial_config(o.config_file);
   const data::AcronymGraspFile record = data::read_acronym_file(o.grasp_file);
   data::require_panda_gripper(record, o.grasp_file);

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "cli_support.hpp"
+#include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/hdf5_file.hpp"
 #include "test_support.hpp"
@@ -444,6 +445,28 @@ TEST(Cli, OutputThatIsAnInputIsRefused) {
                           "is also the input");
   }
   EXPECT_EQ(read_file(copy), original);
+}
+
+// A long job's output held by another process (here the test itself) is refused with one line,
+// and nothing is written; once it is free, the job runs.
+TEST(Cli, ASecondWriterOfALongJobsOutputIsRefused) {
+  ScratchDir dir;
+  const std::string simulate = "simulate " + sample_grasp_file().string() +
+                               " --every 1000 --threads 1 --cache " + (dir / "cache").string() +
+                               " --out " + (dir / "r.h5").string();
+  const std::string make_dataset = "make-dataset --mugs 1 --seed 5 --grasps 4 --threads 1 --out " +
+                                   (dir / "ds").string() + " --cache " + (dir / "cache").string();
+  fs::create_directories(dir / "ds");
+  {
+    const graspecmf::OutputLock file = graspecmf::OutputLock::file(dir / "r.h5");
+    const graspecmf::OutputLock folder = graspecmf::OutputLock::folder(dir / "ds");
+    expect_one_error_line(run(simulate, dir), "r.h5 is in use by another graspecmf process (pid ");
+    expect_one_error_line(run(make_dataset, dir), "ds is in use by another graspecmf process");
+    EXPECT_FALSE(fs::exists(dir / "r.h5"));
+    EXPECT_FALSE(fs::exists(dir / "ds/manifest.json"));
+  }
+  EXPECT_EQ(run(simulate, dir).exit_code, 0);
+  EXPECT_FALSE(fs::exists(dir / ".r.h5.lock"));
 }
 
 TEST(CliPrepareMesh, BadInput) {

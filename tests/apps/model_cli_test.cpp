@@ -10,6 +10,7 @@
 
 #include "../train/tiny_dataset.hpp"
 #include "cli_support.hpp"
+#include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
@@ -237,6 +238,27 @@ TEST(CliModel, BadInput) {
                 dir)
                 .exit_code,
             0);
+  {  // a run folder in use by another process
+    const graspecmf::OutputLock held = graspecmf::OutputLock::folder(run_dir);
+    expect_one_error_line(run("train --config " + (dir / "tiny.json").string() + " --data " +
+                                  data.string() + " --out " + run_dir,
+                              dir),
+                          "run is in use by another graspecmf process");
+  }
+  // A checkpoint with a bit flipped every 4 KB (in tensors' bytes, and maybe in the archive's
+  // structure: either way the file is refused as damaged).
+  fs::create_directories(dir / "damaged");
+  fs::copy_file(dir / "run/config.json", dir / "damaged/config.json");
+  std::string bytes = read_file(dir / "run/checkpoint.pt");
+  for (std::size_t i = 2048; i < bytes.size(); i += 4096)
+    bytes[i] = static_cast<char>(bytes[i] ^ 4);
+  write_file(dir / "damaged/checkpoint.pt", bytes);
+  const graspecmf::testing::CliRun damaged =
+      run("sample --model " + (dir / "damaged").string() + " --mesh " +
+              (data / "meshes/Box/b0.obj").string() + " --out " + (dir / "g.h5").string(),
+          dir);
+  expect_one_error_line(damaged, "checkpoint.pt: ");
+  EXPECT_NE(damaged.err.find("damaged"), std::string::npos) << damaged.err;
   write_file(dir / "empty.xyz", "# no points\n");
   expect_one_error_line(run("sample --model " + run_dir + " --points " +
                                 (dir / "empty.xyz").string() + " --out " + (dir / "g.h5").string(),

@@ -10,6 +10,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/core/version.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/splits.hpp"
@@ -183,12 +184,14 @@ json with_repair_settings(json found, const json& expected) {
   return found;
 }
 
-// Fails unless out can hold the dataset: creates the folders, refuses a folder made with other
-// options, proves that files can be written there, and removes the temporary files of a killed run.
-void prepare_output(const MakeDatasetOptions& o) {
+// Fails unless out can hold the dataset: creates and locks the folders, refuses a folder made with
+// other options, proves that files can be written there, and removes the temporary files of a
+// killed run. The folder stays locked while the result lives.
+[[nodiscard]] OutputLock prepare_output(const MakeDatasetOptions& o) {
   std::error_code ec;
   fs::create_directories(o.out / "grasps", ec);
   if (ec) throw Error(o.out.string() + ": cannot create the output folder (" + ec.message() + ")");
+  OutputLock lock = OutputLock::folder(o.out);
   const fs::path manifest = o.out / "manifest.json";
   if (fs::exists(manifest)) {
     std::ifstream in(manifest);
@@ -208,6 +211,7 @@ void prepare_output(const MakeDatasetOptions& o) {
   write_file_atomically(o.out / ".write-test", "ok\n");
   fs::remove(o.out / ".write-test");
   remove_temporary_files(o.out);
+  return lock;
 }
 
 // The outcome recorded by an existing grasp file, or nothing if it cannot be read.
@@ -406,7 +410,7 @@ std::vector<ObjectOutcome> make_dataset(const MakeDatasetOptions& o,
     throw Error("make-dataset: the density must be a positive number");
   }
   if (o.threads < 1) throw Error("make-dataset: the number of threads must be at least 1");
-  prepare_output(o);
+  const OutputLock lock = prepare_output(o);
 
   // Progress counts only the objects this run makes, so the ETA reflects their pace.
   const std::size_t per_object = o.candidates.num_grasps;

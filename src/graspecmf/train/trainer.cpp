@@ -10,6 +10,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/data/training_sampler.hpp"
 #include "graspecmf/flow/loss.hpp"
@@ -157,12 +158,13 @@ void truncate_log(const fs::path& path, std::int64_t step) {
   write_file_atomically(path, kept);
 }
 
-// Creates the run folder, or checks that it holds this configuration and removes the temporary
-// files of a killed run.
-void prepare_run(const fs::path& run_dir, const TrainConfig& config) {
+// Creates and locks the run folder, or checks that it holds this configuration and removes the
+// temporary files of a killed run; the run folder stays locked while the result lives.
+[[nodiscard]] OutputLock prepare_run(const fs::path& run_dir, const TrainConfig& config) {
   std::error_code ec;
   fs::create_directories(run_dir, ec);
   if (ec) throw Error(run_dir.string() + ": cannot create the run folder (" + ec.message() + ")");
+  OutputLock lock = OutputLock::folder(run_dir);
   remove_temporary_files(run_dir);
   const fs::path file = run_dir / kConfigFile;
   if (fs::exists(file)) {
@@ -170,9 +172,10 @@ void prepare_run(const fs::path& run_dir, const TrainConfig& config) {
       throw Error(run_dir.string() +
                   " holds a run with another configuration; choose another --out or remove it");
     }
-    return;
+    return lock;
   }
   write_file_atomically(file, to_json(config).dump(2) + "\n");
+  return lock;
 }
 
 }  // namespace
@@ -202,7 +205,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   data::TrainingSampler sampler(std::move(training), config.data, config.seed);
   const std::vector<data::GraspObject> validation =
       load_objects(dataset, split.val, config.validation_objects);
-  prepare_run(run_dir, config);
+  const OutputLock lock = prepare_run(run_dir, config);
   at::Generator generator = flow::make_generator(config.seed + 1);
 
   TrainResult result;
