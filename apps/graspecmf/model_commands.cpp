@@ -72,6 +72,9 @@ void run_train(const TrainArgs& a) {
                                record["val_emd"].get<double>());
     }
   };
+  callbacks.skipped = [](const std::string& name, const std::string& reason) {
+    std::cerr << "note: not training on " << name << ": " << reason << "\n";
+  };
   const train::TrainResult result =
       train::train(config, a.data, a.out, a.threads, callbacks, device);
   if (progress) progress->finish();

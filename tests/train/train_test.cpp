@@ -361,6 +361,23 @@ TEST(Trainer, ValidationReportsLossAndEmd) {
   EXPECT_TRUE(std::isfinite(last["val_loss"].get<double>()));
 }
 
+TEST(Trainer, SaysWhichObjectsItSkipsAndWhy) {
+  const ScratchDir dir;
+  const fs::path data = tiny_dataset(dir);
+  graspecmf::testing::write_file(data / "grasps/junk.h5", "not an HDF5 file");
+  TrainConfig config = tiny_config();
+  config.steps = 1;
+  std::vector<std::pair<std::string, std::string>> skipped;
+  TrainCallbacks callbacks;
+  callbacks.skipped = [&](const std::string& name, const std::string& reason) {
+    skipped.emplace_back(name, reason);
+  };
+  train(config, data, dir / "run", 1, callbacks);
+  ASSERT_EQ(skipped.size(), 1u);
+  EXPECT_EQ(skipped[0].first, "junk");
+  EXPECT_NE(skipped[0].second.find("junk.h5"), std::string::npos) << skipped[0].second;
+}
+
 TEST(Trainer, BadInputIsOneClearError) {
   const ScratchDir dir;
   const TrainConfig config = tiny_config();

@@ -187,6 +187,9 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   at::set_num_threads(threads);
   if (!fs::is_directory(data_dir)) throw Error(data_dir.string() + ": no such dataset folder");
   const data::AcronymDataset dataset = data::AcronymDataset::open(data_dir);
+  if (callbacks.skipped) {
+    for (const data::SkippedObject& s : dataset.skipped()) callbacks.skipped(s.name, s.reason);
+  }
   const data::DatasetSplit split = dataset_split(dataset, data_dir, config.seed);
   torch::manual_seed(config.seed);
   nn::GraspFlowModel model(config.model);

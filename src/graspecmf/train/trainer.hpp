@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json_fwd.hpp>
+#include <string>
 #include <vector>
 
 #include "graspecmf/train/train_config.hpp"
@@ -19,6 +20,8 @@ namespace graspecmf::train {
 struct TrainCallbacks {
   std::function<void(std::int64_t step, std::int64_t total)> step;  // after every step
   std::function<void(const nlohmann::json& record)> record;         // each log.jsonl record
+  // Before training: each dataset object left out (unreadable, no mesh, too few successes).
+  std::function<void(const std::string& name, const std::string& reason)> skipped;
 };
 
 struct TrainResult {
