@@ -15,7 +15,9 @@ namespace graspecmf::train {
 
 namespace {
 
-// x(1) from x0 for an object whose z terms are `condition`.
+// x(1) from x0 for an object whose z terms are `condition`, integrated a chunk of grasps at a time:
+// each grasp's path is independent of the others, and chunks keep the field's tensors in cache
+// and in reused heap memory, and memory bounded for any count.
 flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
                                     const nn::ObjectCondition& condition, const flow::PoseBatch& x0,
                                     const SamplingSettings& settings) {
@@ -26,8 +28,18 @@ flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
     const nn::Velocity velocity = model->forward(condition, object, x.R, x.p, t, keep);
     return std::make_pair(velocity.omega, velocity.v);
   };
-  return flow::integrate(flow::guided_field(field, settings.guidance), x0,
-                         flow::parse_solver(settings.solver), settings.steps);
+  const flow::VectorField guided = flow::guided_field(field, settings.guidance);
+  const flow::Solver solver = flow::parse_solver(settings.solver);
+  const int64_t batch = x0.R.is_cuda() ? kGpuIntegrationChunk : kCpuIntegrationChunk;
+  std::vector<at::Tensor> rotations, positions;
+  for (int64_t first = 0; first < x0.R.size(0); first += batch) {
+    const int64_t count = std::min<int64_t>(batch, x0.R.size(0) - first);
+    const flow::PoseBatch chunk{x0.R.narrow(0, first, count), x0.p.narrow(0, first, count)};
+    const flow::PoseBatch x1 = flow::integrate(guided, chunk, solver, settings.steps);
+    rotations.push_back(x1.R);
+    positions.push_back(x1.p);
+  }
+  return {torch::cat(rotations), torch::cat(positions)};
 }
 
 // Grasps to draw in a later sampling round: the missing count over the kept fraction so far

@@ -31,6 +31,10 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
 // thrown if fewer than n are kept after kMaxSamplingRounds. Throws Error for an empty or non-finite
 // cloud or n = 0.
 inline constexpr int kMaxSamplingRounds = 8;
+// The most grasps integrated in one batch on the CPU and on a GPU; larger requests are integrated
+// in chunks of this size (docs/model.md, "Speed").
+inline constexpr std::int64_t kCpuIntegrationChunk = 256;
+inline constexpr std::int64_t kGpuIntegrationChunk = 16384;
 std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
