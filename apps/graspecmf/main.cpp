@@ -1,5 +1,5 @@
 // The graspecmf command line: parses arguments, dispatches to a subcommand, and turns any error
-// into one line on stderr with exit code 1.
+// into one line on stderr (the first line of its message) with exit code 1.
 
 #include <CLI/CLI.hpp>
 #include <cstring>
@@ -43,7 +43,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e);
   } catch (const std::exception& e) {
-    std::cerr << "error: " << e.what() << "\n";
+    // Our errors are one line; a library's (LibTorch's allocator, with its backtrace) may not be.
+    const std::string what = e.what();
+    std::cerr << "error: " << what.substr(0, what.find('\n')) << "\n";
     return 1;
   }
   return 0;

@@ -561,7 +561,8 @@ void add_model_commands(CLI::App& app) {
   s->units.add_options(sample_cmd);
   sample_cmd->add_option("--acronym", s->acronym, "ACRONYM grasp file naming the object");
   sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
-  sample_cmd->add_option("--num", s->num, "Grasps to generate")->check(CLI::Range(1, 10000000));
+  sample_cmd->add_option("--num", s->num, "Grasps to generate (at most 10^6)")
+      ->check(CLI::Range(1, 1000000));
   add_sampling_options(sample_cmd, s->sampling);
   add_filter_flags(sample_cmd, s->checks, "grasps",
                    "the object's points (every point of --points, or a dense surface sample of "

@@ -17,6 +17,7 @@
 
 namespace {
 namespace fs = std::filesystem;
+using graspecmf::testing::CliRun;
 using graspecmf::testing::expect_one_error_line;
 using graspecmf::testing::read_file;
 using graspecmf::testing::run;
@@ -253,12 +254,17 @@ TEST(CliModel, BadInput) {
   for (std::size_t i = 2048; i < bytes.size(); i += 4096)
     bytes[i] = static_cast<char>(bytes[i] ^ 4);
   write_file(dir / "damaged/checkpoint.pt", bytes);
-  const graspecmf::testing::CliRun damaged =
+  const CliRun damaged =
       run("sample --model " + (dir / "damaged").string() + " --mesh " +
               (data / "meshes/Box/b0.obj").string() + " --out " + (dir / "g.h5").string(),
           dir);
   expect_one_error_line(damaged, "checkpoint.pt: ");
   EXPECT_NE(damaged.err.find("damaged"), std::string::npos) << damaged.err;
+  const CliRun too_many = run("sample --model " + run_dir + " --mesh " +
+                                  (data / "meshes/Box/b0.obj").string() + " --num 1000001",
+                              dir);
+  EXPECT_NE(too_many.exit_code, 0);
+  EXPECT_NE(too_many.err.find("--num"), std::string::npos) << too_many.err;
   write_file(dir / "empty.xyz", "# no points\n");
   expect_one_error_line(run("sample --model " + run_dir + " --points " +
                                 (dir / "empty.xyz").string() + " --out " + (dir / "g.h5").string(),

@@ -367,6 +367,17 @@ TEST(ReadMeshErrors, MissingFile) {
   expect_read_error(dir / "absent.obj", "no such file");
 }
 
+// A binary STL whose header declares 10^9 triangles over 100 bytes: refused at once, nothing
+// allocated for the declared count.
+TEST(ReadMeshErrors, StlDeclaringMoreTrianglesThanItHolds) {
+  ScratchDir dir;
+  std::string stl(80, '\0');
+  append_u32(stl, 1000000000);
+  stl += std::string(100, '\0');
+  write_file(dir / "huge.stl", stl);
+  expect_read_error(dir / "huge.stl", "cannot read");
+}
+
 TEST(ReadMeshErrors, UnknownExtension) {
   ScratchDir dir;
   write_file(dir / "cube.off", "OFF\n8 12 0\n");
