@@ -43,14 +43,17 @@ flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
 }
 
 // Grasps to draw in a later sampling round: the missing count over the kept fraction so far
-// (1/64 if none was kept), with a quarter to spare; at least 64, at most 64 n.
+// (1/64 if none was kept), with a quarter to spare; at least 64, at most 64 n and 2^20 (so a
+// round's candidates take at most about 150 MB).
 std::size_t next_round_size(std::size_t n, std::size_t missing, std::size_t kept,
                             std::size_t drawn) {
+  constexpr std::size_t kMaxRound = std::size_t{1} << 20;
   const double kept_fraction =
       kept == 0 ? 1.0 / 64 : static_cast<double>(kept) / static_cast<double>(drawn);
   const auto wanted =
       static_cast<std::size_t>(std::ceil(1.25 * static_cast<double>(missing) / kept_fraction));
-  return std::clamp<std::size_t>(wanted, 64, std::max<std::size_t>(64, 64 * n));
+  return std::clamp<std::size_t>(wanted, 64,
+                                 std::max<std::size_t>(64, std::min(64 * n, kMaxRound)));
 }
 
 // The seed of sampling round r ≥ 1 (round 0 uses the caller's seed).
