@@ -51,3 +51,22 @@ TEST(Hdf5Damage, DeclaredExtentBeyondTheStoredBytesIsRefused) {
 }
 
 }  // namespace
+
+namespace graspecmf::data {
+namespace {
+
+// Found by fuzz_acronym: a NULL variable-length string crashed HDF5's std::string read, and a
+// string array overran the one pointer it was read into.
+TEST(FuzzRegressions, AcronymStringsMustBeOneNonNullString) {
+  testing::expect_error(
+      [] {
+        read_acronym_file(testing::fuzz_regression("acronym", "null_vlen_string_object_file.h5"));
+      },
+      "is a NULL string");
+  testing::expect_error(
+      [] { read_acronym_file(testing::fuzz_regression("acronym", "object_file_string_array.h5")); },
+      "/object/file must hold one string");
+}
+
+}  // namespace
+}  // namespace graspecmf::data

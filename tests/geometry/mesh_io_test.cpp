@@ -378,6 +378,13 @@ TEST(ReadMeshErrors, StlDeclaringMoreTrianglesThanItHolds) {
   expect_read_error(dir / "huge.stl", "cannot read");
 }
 
+// Found by fuzz_ply_mesh: PLY vertices without a 'z' made assimp fail an assertion and abort.
+TEST(ReadMeshErrors, PlyVerticesWithoutCoordinates) {
+  expect_read_error(
+      graspecmf::testing::fuzz_regression("ply_mesh", "assimp_triangulate_assert.ply"),
+      "no scalar 'z' property");
+}
+
 TEST(ReadMeshErrors, UnknownExtension) {
   ScratchDir dir;
   write_file(dir / "cube.off", "OFF\n8 12 0\n");

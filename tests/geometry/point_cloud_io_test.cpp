@@ -124,3 +124,14 @@ TEST(PointCloudIo, BadFilesAreOneClearError) {
 
 }  // namespace
 }  // namespace graspecmf::geometry
+
+// Found by hand while fuzzing read_npy: a shape whose byte count wraps around 2^64 passed the size
+// check and threw std::length_error.
+TEST(FuzzRegressions, NpyShapeWhoseSizeOverflows) {
+  graspecmf::testing::expect_error(
+      [] {
+        graspecmf::geometry::read_point_cloud(
+            graspecmf::testing::fuzz_regression("npy", "shape_rows_overflow.npy"));
+      },
+      "data size does not match its shape");
+}

@@ -23,6 +23,11 @@ inline std::filesystem::path sample_grasp_file() {
 inline std::filesystem::path sample_mesh_file() {
   return sample_root() / "meshes" / "Mug" / "10f6e09036350e92b3f21f1137c3c347.obj";
 }
+// An input a fuzz target found (or a hand-made one beside them): fuzz/regressions/TARGET/NAME.
+inline std::filesystem::path fuzz_regression(const std::string& target, const std::string& name) {
+  return std::filesystem::path(GRASPECMF_DATA_DIR).parent_path() / "fuzz" / "regressions" / target /
+         name;
+}
 inline std::filesystem::path gripper_mesh_file() {
   return sample_root() / "franka_gripper_collision_mesh.stl";
 }

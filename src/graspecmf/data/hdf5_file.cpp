@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <memory>
 #include <numeric>
 
 #include "graspecmf/core/atomic_file.hpp"
@@ -227,9 +228,21 @@ std::string Hdf5Reader::read_string(const std::string& path) const {
     if (ds.getTypeClass() != H5T_STRING) {
       throw Error(impl_->path.string() + ": /" + path + " is not a string");
     }
-    std::string value;
-    ds.read(value, ds.getStrType());
-    return value;
+    if (ds.getSpace().getSimpleExtentNpoints() != 1) {
+      throw Error(impl_->path.string() + ": /" + path + " must hold one string");
+    }
+    const H5::StrType type = ds.getStrType();
+    if (!type.isVariableStr()) {
+      std::string value;
+      ds.read(value, type);
+      return value;
+    }
+    // A variable-length string may be NULL, which HDF5's std::string overload does not handle.
+    char* text = nullptr;
+    ds.read(static_cast<void*>(&text), type);
+    const std::unique_ptr<char, herr_t (*)(void*)> owned(text, H5free_memory);
+    if (text == nullptr) throw Error(impl_->path.string() + ": /" + path + " is a NULL string");
+    return std::string(text);
   } catch (const H5::Exception& e) {
     throw Error(impl_->path.string() + ": cannot read /" + path + ": " + describe(e));
   }

@@ -268,22 +268,33 @@ TriangleMesh read_obj(const fs::path& path) {
 
 // ---- STL, PLY and glTF through assimp ----
 
-// Refuses a PLY file whose header declares more vertices or faces than the file can hold, before
-// assimp allocates for them.
-void check_ply_sizes(const fs::path& path) {
+// Refuses a PLY file whose header declares more vertices or faces than the file can hold, or
+// whose vertices lack scalar x, y and z, before assimp allocates for them (or, for vertices
+// without coordinates, fails an internal assertion that aborts the process).
+void check_ply_header(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::string head(64 * 1024, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
+  PlyHeader header;
   try {
-    read_ply_header(path, head, fs::file_size(path));
+    header = read_ply_header(path, head, fs::file_size(path));
   } catch (const Error& e) {
     throw Error(std::string("cannot read ") + e.what());  // "<path>: <why>", as fail_read says
+  }
+  const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
+                                   [](const PlyElement& e) { return e.name == "vertex"; });
+  for (const char* axis : {"x", "y", "z"}) {
+    if (vertex == header.elements.end() ||
+        std::none_of(vertex->properties.begin(), vertex->properties.end(),
+                     [&](const PlyProperty& p) { return p.name == axis && p.count_size == 0; })) {
+      fail_read(path, std::string("the PLY vertices have no scalar '") + axis + "' property");
+    }
   }
 }
 
 TriangleMesh read_with_assimp(const fs::path& path) {
-  if (lower_extension(path) == ".ply") check_ply_sizes(path);
+  if (lower_extension(path) == ".ply") check_ply_header(path);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(
       path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |

@@ -83,7 +83,11 @@ std::vector<Vec3> read_npy(const fs::path& path, const std::string& bytes) {
       cols != 3) {
     throw fail(".npy array must have shape (N, 3)");
   }
-  if (bytes.size() != data_start + rows * 3 * width) throw fail("truncated .npy data");
+  // Compared by division: rows * 3 * width may wrap for a shape no file could hold.
+  const std::size_t data_bytes = bytes.size() - data_start;
+  if (data_bytes % (3 * width) != 0 || data_bytes / (3 * width) != rows) {
+    throw fail(".npy data size does not match its shape");
+  }
   std::vector<Vec3> points(rows);
   const char* data = bytes.data() + data_start;
   for (std::size_t i = 0; i < 3 * rows; ++i) {

@@ -106,7 +106,7 @@ TrialConfig trial_config_from_json(const nlohmann::json& json) {
   TrialConfig config;
   for (const auto& [key, value] : json.items()) {
     const auto* on_off = std::find_if(std::begin(kSwitches), std::end(kSwitches),
-                                      [&](const Switch& s) { return key == s.name; });
+                                      [&name = key](const Switch& s) { return name == s.name; });
     if (on_off != std::end(kSwitches)) {
       if (!value.is_boolean()) throw Error("trial config: '" + key + "' must be true or false");
       config.*(on_off->member) = value.get<bool>();
