@@ -385,6 +385,12 @@ TEST(ReadMeshErrors, PlyVerticesWithoutCoordinates) {
       "no scalar 'z' property");
 }
 
+// Found by fuzz_ply_mesh: a vertical tab before end_header made assimp's PLY reader hang.
+TEST(ReadMeshErrors, PlyHeaderWithControlCharacters) {
+  expect_read_error(graspecmf::testing::fuzz_regression("ply_mesh", "assimp_vertical_tab_hang.ply"),
+                    "the PLY header is not lines of text");
+}
+
 TEST(ReadMeshErrors, UnknownExtension) {
   ScratchDir dir;
   write_file(dir / "cube.off", "OFF\n8 12 0\n");

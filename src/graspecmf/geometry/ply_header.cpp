@@ -1,5 +1,6 @@
 #include "graspecmf/geometry/ply_header.hpp"
 
+#include <algorithm>
 #include <sstream>
 
 #include "graspecmf/core/error.hpp"
@@ -33,6 +34,14 @@ PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view he
   if (head.substr(0, 4) != "ply\n" || end == std::string_view::npos) {
     throw fail("not a PLY file");
   }
+  // Header lines are text: "end_header" must start its own line, and control characters other
+  // than tab and carriage return are refused (assimp's reader hangs on a vertical tab before it).
+  const bool text =
+      std::all_of(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(end), [](char c) {
+        const auto u = static_cast<unsigned char>(c);
+        return u >= 0x20 || c == '\n' || c == '\r' || c == '\t';
+      });
+  if (!text || head[end - 1] != '\n') throw fail("the PLY header is not lines of text");
   PlyHeader header;
   header.data_start = end + kEnd.size();
   std::istringstream lines{std::string(head.substr(0, end))};

@@ -1,0 +1,8 @@
+// Fuzzes geometry::read_mesh on .ply files (read_ply_header size check, then assimp).
+#include "fuzz_input_file.hpp"
+#include "graspecmf/geometry/mesh_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return graspecmf::fuzz::read_input_as_file(
+      data, size, ".ply", [](const auto& path) { graspecmf::geometry::read_mesh(path); });
+}

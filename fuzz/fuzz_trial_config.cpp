@@ -1,0 +1,9 @@
+// Fuzzes sim::read_trial_config on trial config JSON (nlohmann parse, from_json, validate).
+#include "fuzz_input_file.hpp"
+#include "graspecmf/sim/trial_config.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return graspecmf::fuzz::read_input_as_file(data, size, ".json", [](const auto& path) {
+    graspecmf::sim::read_trial_config(path.string());
+  });
+}

@@ -1,0 +1,8 @@
+// Fuzzes geometry::read_point_cloud on .xyz files (whitespace-separated x y z rows).
+#include "fuzz_input_file.hpp"
+#include "graspecmf/geometry/point_cloud_io.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return graspecmf::fuzz::read_input_as_file(
+      data, size, ".xyz", [](const auto& path) { graspecmf::geometry::read_point_cloud(path); });
+}
