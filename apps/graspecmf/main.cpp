@@ -44,8 +44,7 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const std::exception& e) {
     // Our errors are one line; a library's (LibTorch's allocator, with its backtrace) may not be.
-    const std::string what = e.what();
-    std::cerr << "error: " << what.substr(0, what.find('\n')) << "\n";
+    std::cerr << "error: " << graspecmf::first_line(e.what()) << "\n";
     return 1;
   }
   return 0;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 #include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/watertight.hpp"
@@ -50,8 +51,7 @@ geometry::WrapLength parse_length(const std::string& text, const char* option) {
 }
 
 void check_paths(const PrepareMeshArgs& a) {
-  std::string ext = fs::path(a.out).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string ext = lower_extension(a.out);
   if (ext != ".obj" && ext != ".ply") {
     throw Error("prepare-mesh: --out " + a.out + " must end in .obj or .ply");
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/geometry/mesh_topology.hpp"
 #include "test_meshes.hpp"
@@ -367,6 +368,16 @@ TEST(ReadMeshErrors, MissingFile) {
   expect_read_error(dir / "absent.obj", "no such file");
 }
 
+// OBJ and ASCII STL declare no counts: a (sparse) file over the input cap is refused by its size.
+TEST(ReadMeshErrors, FilesOverTheInputCap) {
+  ScratchDir dir;
+  for (const char* name : {"huge.obj", "huge.stl"}) {
+    write_file(dir / name, "");
+    fs::resize_file(dir / name, kMaxInputFileBytes + 1);
+    expect_read_error(dir / name, "over 1 GiB");
+  }
+}
+
 // A binary STL whose header declares 10^9 triangles over 100 bytes: refused at once, nothing
 // allocated for the declared count.
 TEST(ReadMeshErrors, StlDeclaringMoreTrianglesThanItHolds) {
@@ -382,7 +393,35 @@ TEST(ReadMeshErrors, StlDeclaringMoreTrianglesThanItHolds) {
 TEST(ReadMeshErrors, PlyVerticesWithoutCoordinates) {
   expect_read_error(
       graspecmf::testing::fuzz_regression("ply_mesh", "assimp_triangulate_assert.ply"),
-      "no scalar 'z' property");
+      "no scalar x, y and z properties");
+}
+
+// An L-shaped hexagon whose fan from the first corner would fold over is refused, not split
+// wrongly; the same L from a corner that sees every other one reads as its 4 triangles.
+TEST(ReadMeshErrors, PolygonsAFanCannotSplit) {
+  ScratchDir dir;
+  const std::string header =
+      "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+      "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+      "0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\n";
+  write_file(dir / "folded.ply", header + "6 2 3 4 5 0 1\n");
+  expect_read_error(dir / "folded.ply", "cannot split");
+  write_file(dir / "fan.ply", header + "6 0 1 2 3 4 5\n");
+  const TriangleMesh mesh = read_mesh(dir / "fan.ply");
+  EXPECT_EQ(mesh.triangles.size(), 4u);
+  EXPECT_NEAR(surface_area(mesh), 3.0, 1e-12);
+}
+
+// Found by fuzz_ply_mesh: damaged quad data made assimp's triangulation fail an assertion and
+// abort; our own split reads it as a mesh or refuses it with one line.
+TEST(ReadMeshErrors, DamagedPolygonData) {
+  const fs::path file =
+      graspecmf::testing::fuzz_regression("ply_mesh", "assimp_triangulate_assert_2.ply");
+  try {
+    read_mesh(file);
+  } catch (const Error& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("cannot read " + file.string(), 0), 0u) << e.what();
+  }
 }
 
 // Found by fuzz_ply_mesh: a vertical tab before end_header made assimp's PLY reader hang.

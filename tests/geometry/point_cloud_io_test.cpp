@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "test_support.hpp"
 
@@ -120,6 +121,9 @@ TEST(PointCloudIo, BadFilesAreOneClearError) {
   EXPECT_THROW(read_point_cloud(dir / "cut.npy"), Error);
   write_file(dir / "int.npy", npy("<i4", "(1, 3)", std::string(12, '\0')));
   EXPECT_THROW(read_point_cloud(dir / "int.npy"), Error);
+  write_file(dir / "huge.xyz", "");  // sparse, over the input cap: refused by its size
+  std::filesystem::resize_file(dir / "huge.xyz", kMaxInputFileBytes + 1);
+  EXPECT_THROW(read_point_cloud(dir / "huge.xyz"), Error);
 }
 
 }  // namespace

@@ -12,4 +12,11 @@ class Error : public std::runtime_error {
   explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+// The first line of a library's message (LibTorch, assimp, CGAL), for a one-line Error; "unknown
+// error" when that line is empty.
+inline std::string first_line(const std::string& text) {
+  const std::string line = text.substr(0, text.find('\n'));
+  return line.empty() ? std::string("unknown error") : line;
+}
+
 }  // namespace graspecmf

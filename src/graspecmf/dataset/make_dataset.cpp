@@ -10,6 +10,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 #include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/core/version.hpp"
 #include "graspecmf/data/acronym_file.hpp"
@@ -372,9 +373,7 @@ std::vector<ObjectSource> mesh_folder_sources(const fs::path& dir, double scale)
   if (!fs::is_directory(dir)) throw Error(dir.string() + ": not a folder");
   std::vector<fs::path> files;
   for (const auto& entry : fs::directory_iterator(dir)) {
-    std::string ext = entry.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    const std::string ext = lower_extension(entry.path());
     if (entry.is_regular_file() &&
         (ext == ".obj" || ext == ".stl" || ext == ".ply" || ext == ".glb" || ext == ".gltf")) {
       files.push_back(entry.path());

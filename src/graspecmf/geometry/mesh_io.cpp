@@ -23,6 +23,7 @@
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 #include "graspecmf/geometry/ply_header.hpp"
 
 namespace graspecmf::geometry {
@@ -34,28 +35,15 @@ namespace {
   throw Error("cannot read " + path.string() + ": " + why);
 }
 
-std::string lower_extension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail_read(path, "the file cannot be opened");
-  std::error_code ec;
-  const std::uintmax_t size = fs::file_size(path, ec);
-  if (ec) fail_read(path, "the file size cannot be read");
-  std::string bytes(static_cast<std::size_t>(size), '\0');
-  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  if (static_cast<std::uintmax_t>(in.gcount()) != size) fail_read(path, "reading the file failed");
-  return bytes;
-}
-
-// First line of a library message, for a one-line Error.
-std::string first_line(const std::string& text) {
-  const std::string line = text.substr(0, text.find('\n'));
-  return line.empty() ? std::string("unknown error") : line;
+// Calls read(), giving an Error it throws ("<path>: <why>") the mesh reader's "cannot read "
+// prefix.
+template <typename Read>
+auto with_read_prefix(const Read& read) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    throw Error(std::string("cannot read ") + e.what());
+  }
 }
 
 bool is_blank(char c) {
@@ -196,7 +184,7 @@ ObjScan scan_obj_text(const std::string& text, const fs::path& path) {
 }
 
 TriangleMesh read_obj(const fs::path& path) {
-  const std::string text = read_bytes(path);
+  const std::string text = with_read_prefix([&] { return read_input_file(path); });
   ObjScan scan = scan_obj_text(text, path);
   if (scan.expected_triangles == 0) {
     fail_read(path, "no faces (" + std::to_string(scan.vertices.size()) +
@@ -276,43 +264,65 @@ void check_ply_header(const fs::path& path) {
   std::string head(64 * 1024, '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
-  PlyHeader header;
-  try {
-    header = read_ply_header(path, head, fs::file_size(path));
-  } catch (const Error& e) {
-    throw Error(std::string("cannot read ") + e.what());  // "<path>: <why>", as fail_read says
-  }
+  const PlyHeader header =
+      with_read_prefix([&] { return read_ply_header(path, head, fs::file_size(path)); });
   const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
                                    [](const PlyElement& e) { return e.name == "vertex"; });
-  for (const char* axis : {"x", "y", "z"}) {
-    if (vertex == header.elements.end() ||
-        std::none_of(vertex->properties.begin(), vertex->properties.end(),
-                     [&](const PlyProperty& p) { return p.name == axis && p.count_size == 0; })) {
-      fail_read(path, std::string("the PLY vertices have no scalar '") + axis + "' property");
+  if (vertex == header.elements.end() || !find_xyz(vertex->properties)) {
+    fail_read(path, "the PLY vertices have no scalar x, y and z properties");
+  }
+}
+
+// Appends a polygon face of the mesh part whose first vertex is mesh vertex `offset` as a fan of
+// triangles from its first corner: exact for a convex polygon; a polygon where a fan triangle
+// faces against the polygon's normal (concave) is refused, as is a corner beyond the part's
+// vertices.
+// Our own split replaces aiProcess_Triangulate, whose assertions abort on damaged faces.
+void add_polygon(const fs::path& path, const aiMesh& part, const aiFace& face, std::uint32_t offset,
+                 TriangleMesh& mesh) {
+  for (unsigned int k = 0; k < face.mNumIndices; ++k) {
+    if (face.mIndices[k] >= part.mNumVertices) {
+      fail_read(path, "a face refers to vertex " + std::to_string(face.mIndices[k]) +
+                          " of a part with " + std::to_string(part.mNumVertices) + " vertices");
     }
+  }
+  const auto corner = [&](unsigned int k) {
+    const aiVector3D& v = part.mVertices[face.mIndices[k]];
+    return Vec3(v.x, v.y, v.z);
+  };
+  Vec3 normal = Vec3::Zero();  // Newell's normal of the polygon
+  for (unsigned int k = 0; k < face.mNumIndices; ++k) {
+    normal += corner(k).cross(corner((k + 1) % face.mNumIndices));
+  }
+  for (unsigned int k = 1; k + 1 < face.mNumIndices; ++k) {
+    if ((corner(k) - corner(0)).cross(corner(k + 1) - corner(0)).dot(normal) < 0) {
+      fail_read(path, "a face is a polygon of " + std::to_string(face.mNumIndices) +
+                          " corners that a fan from its first corner cannot split (concave; "
+                          "triangulate the mesh in a mesh editor first)");
+    }
+    mesh.triangles.push_back(
+        {offset + face.mIndices[0], offset + face.mIndices[k], offset + face.mIndices[k + 1]});
   }
 }
 
 TriangleMesh read_with_assimp(const fs::path& path) {
   if (lower_extension(path) == ".ply") check_ply_header(path);
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(
-      path.string(), aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                         aiProcess_PreTransformVertices | aiProcess_ValidateDataStructure);
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_JoinIdenticalVertices |
+                                                              aiProcess_PreTransformVertices |
+                                                              aiProcess_ValidateDataStructure);
   if (scene == nullptr) fail_read(path, first_line(importer.GetErrorString()));
   TriangleMesh mesh;
   for (unsigned int m = 0; m < scene->mNumMeshes; ++m) {
-    const aiMesh* part = scene->mMeshes[m];
+    const aiMesh& part = *scene->mMeshes[m];
     const auto offset = static_cast<std::uint32_t>(mesh.vertices.size());
-    for (unsigned int i = 0; i < part->mNumVertices; ++i) {
-      const aiVector3D& v = part->mVertices[i];
+    for (unsigned int i = 0; i < part.mNumVertices; ++i) {
+      const aiVector3D& v = part.mVertices[i];
       mesh.vertices.emplace_back(v.x, v.y, v.z);
     }
-    for (unsigned int f = 0; f < part->mNumFaces; ++f) {
-      const aiFace& face = part->mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines carry no surface
-      mesh.triangles.push_back(
-          {offset + face.mIndices[0], offset + face.mIndices[1], offset + face.mIndices[2]});
+    for (unsigned int f = 0; f < part.mNumFaces; ++f) {
+      // Points and lines carry no surface.
+      if (part.mFaces[f].mNumIndices >= 3) add_polygon(path, part, part.mFaces[f], offset, mesh);
     }
   }
   return mesh;
@@ -419,9 +429,10 @@ std::string ply_bytes(const TriangleMesh& mesh) {
 }  // namespace
 
 TriangleMesh read_mesh(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) fail_read(path, "no such file");
-  if (!fs::is_regular_file(path, ec)) fail_read(path, "not a regular file");
+  with_read_prefix([&] {
+    check_input_file(path);
+    return 0;
+  });
   const std::string ext = lower_extension(path);
   TriangleMesh mesh;
   if (ext == ".obj") {

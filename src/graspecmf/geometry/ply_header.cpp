@@ -95,4 +95,17 @@ PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view he
   return header;
 }
 
+std::optional<std::array<std::size_t, 3>> find_xyz(const std::vector<PlyProperty>& properties) {
+  std::array<std::size_t, 3> axis{};
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::string name(1, static_cast<char>('x' + k));
+    const auto it = std::find_if(properties.begin(), properties.end(), [&](const PlyProperty& p) {
+      return p.name == name && p.count_size == 0;
+    });
+    if (it == properties.end()) return std::nullopt;
+    axis[k] = static_cast<std::size_t>(it - properties.begin());
+  }
+  return axis;
+}
+
 }  // namespace graspecmf::geometry

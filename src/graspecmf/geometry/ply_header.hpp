@@ -2,8 +2,10 @@
 // The header of a PLY file: format, elements and their properties, checked against the file's
 // size so that a reader never allocates for data the file cannot hold.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,5 +37,9 @@ struct PlyHeader {
 // binary scalar, two characters per ASCII value).
 PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view head,
                           std::uintmax_t file_size);
+
+// The indices of the scalar properties named x, y and z among properties, or nullopt if one is
+// missing (a list property of that name does not count).
+std::optional<std::array<std::size_t, 3>> find_xyz(const std::vector<PlyProperty>& properties);
 
 }  // namespace graspecmf::geometry

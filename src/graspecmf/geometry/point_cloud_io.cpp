@@ -9,26 +9,12 @@
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 #include "graspecmf/geometry/ply_header.hpp"
 
 namespace graspecmf::geometry {
 namespace fs = std::filesystem;
 namespace {
-
-std::string lower_extension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return ext;
-}
-
-std::string read_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(path.string() + ": cannot open point cloud");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return buffer.str();
-}
 
 std::vector<Vec3> read_xyz(const fs::path& path, const std::string& bytes) {
   std::vector<Vec3> points;
@@ -108,17 +94,15 @@ std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
   }
   const std::vector<PlyProperty>& properties = header.elements.front().properties;
   const std::size_t count = static_cast<std::size_t>(header.elements.front().count);
-  int axis[3] = {-1, -1, -1};
-  for (std::size_t i = 0; i < properties.size(); ++i) {
-    if (properties[i].count_size > 0) throw fail("PLY vertex list properties are not supported");
-    for (int k = 0; k < 3; ++k) {
-      if (properties[i].name == std::string(1, static_cast<char>('x' + k))) {
-        if (!properties[i].floating) throw fail("PLY x, y, z must be float or double");
-        axis[k] = static_cast<int>(i);
-      }
-    }
+  for (const PlyProperty& property : properties) {
+    if (property.count_size > 0) throw fail("PLY vertex list properties are not supported");
   }
-  if (axis[0] < 0 || axis[1] < 0 || axis[2] < 0) throw fail("PLY vertices need x, y and z");
+  const auto found = find_xyz(properties);
+  if (!found) throw fail("PLY vertices need x, y and z");
+  const std::array<std::size_t, 3> axis = *found;
+  for (const std::size_t a : axis) {
+    if (!properties[a].floating) throw fail("PLY x, y, z must be float or double");
+  }
   std::vector<Vec3> points(count);
   const std::size_t data_start = header.data_start;
   if (header.format == "ascii") {
@@ -128,7 +112,7 @@ std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
       for (double& v : values) {
         if (!(body >> v)) throw fail("truncated PLY vertex data");
       }
-      for (int k = 0; k < 3; ++k) p[k] = values[static_cast<std::size_t>(axis[k])];
+      for (int k = 0; k < 3; ++k) p[k] = values[axis[static_cast<std::size_t>(k)]];
     }
     return points;
   }
@@ -142,7 +126,7 @@ std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
   for (std::size_t i = 0; i < count; ++i) {
     const char* vertex = bytes.data() + data_start + i * stride;
     for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::size_t>(axis[k]);
+      const std::size_t a = axis[static_cast<std::size_t>(k)];
       points[i][k] = properties[a].size == 4 ? load<float>(vertex + offset[a])
                                              : load<double>(vertex + offset[a]);
     }
@@ -157,8 +141,7 @@ std::vector<Vec3> read_point_cloud(const fs::path& path) {
   if (ext != ".xyz" && ext != ".txt" && ext != ".npy" && ext != ".ply") {
     throw Error(path.string() + ": point clouds must be .xyz, .txt, .npy or .ply");
   }
-  if (!fs::exists(path)) throw Error(path.string() + ": no such file");
-  const std::string bytes = read_bytes(path);
+  const std::string bytes = read_input_file(path);
   const std::vector<Vec3> points = ext == ".npy"   ? read_npy(path, bytes)
                                    : ext == ".ply" ? read_ply(path, bytes)
                                                    : read_xyz(path, bytes);

@@ -95,8 +95,7 @@ TriangleMesh alpha_wrap(const TriangleMesh& mesh, const WrapLengths& lengths) {
   try {
     CGAL::alpha_wrap_3(points, faces, lengths.alpha, lengths.offset, wrap);
   } catch (const std::exception& e) {
-    const std::string what = e.what();
-    throw Error("watertight: the alpha wrap failed: " + what.substr(0, what.find('\n')));
+    throw Error("watertight: the alpha wrap failed: " + first_line(e.what()));
   }
   wrap.collect_garbage();
   TriangleMesh out;

@@ -1,0 +1,41 @@
+#include "graspecmf/core/input_file.hpp"
+
+#include <cctype>
+#include <fstream>
+
+#include "graspecmf/core/error.hpp"
+
+namespace graspecmf {
+namespace fs = std::filesystem;
+
+std::string lower_extension(const fs::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+void check_input_file(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw Error(path.string() + ": no such file");
+  if (!fs::is_regular_file(path, ec)) throw Error(path.string() + ": not a regular file");
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw Error(path.string() + ": the file size cannot be read");
+  if (size > kMaxInputFileBytes) {
+    throw Error(path.string() + ": the file has " + std::to_string(size) +
+                " bytes; input files over 1 GiB are refused (decimate or downsample it first)");
+  }
+}
+
+std::string read_input_file(const fs::path& path) {
+  check_input_file(path);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": the file cannot be opened");
+  std::string bytes(static_cast<std::size_t>(fs::file_size(path)), '\0');
+  in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  if (static_cast<std::size_t>(in.gcount()) != bytes.size()) {
+    throw Error(path.string() + ": reading the file failed");
+  }
+  return bytes;
+}
+
+}  // namespace graspecmf
