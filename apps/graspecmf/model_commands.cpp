@@ -49,13 +49,15 @@ constexpr int kDefaultThreads = 1;
 // ---- train ----
 
 struct TrainArgs {
-  std::string config, data, out;
+  std::string config, data, out, init;
   int threads = kDefaultThreads;
   std::string device = "cpu";
 };
 
 void run_train(const TrainArgs& a) {
-  require_distinct_output("--out", a.out, {a.config}, {a.data});
+  std::vector<fs::path> input_folders{a.data};
+  if (!a.init.empty()) input_folders.emplace_back(a.init);
+  require_distinct_output("--out", a.out, {a.config}, input_folders);
   const train::TrainConfig config = train::read_train_config(a.config);
   const c10::Device device = train::parse_device(a.device);
   std::unique_ptr<ProgressLine> progress;
@@ -76,7 +78,7 @@ void run_train(const TrainArgs& a) {
     std::cerr << "note: not training on " << name << ": " << reason << "\n";
   };
   const train::TrainResult result =
-      train::train(config, a.data, a.out, a.threads, callbacks, device);
+      train::train(config, a.data, a.out, a.threads, callbacks, device, a.init);
   if (progress) progress->finish();
   std::cout << fmt::format(
       "{} steps done{} in {}; run folder {}\n", result.steps,
@@ -537,6 +539,9 @@ void add_model_commands(CLI::App& app) {
   train_cmd->add_option("--out", t->out, "Run folder (resumed if it holds this config)")
       ->required();
   train_cmd->add_option("--threads", t->threads, "LibTorch threads")->check(CLI::Range(1, 256));
+  train_cmd->add_option("--init", t->init,
+                        "Start from this model's weights (a model or run folder with the same "
+                        "network settings, e.g. models/mugs): fine-tuning");
   add_device_option(train_cmd, t->device);
   train_cmd->callback([t] { run_train(*t); });
 

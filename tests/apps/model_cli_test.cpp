@@ -335,6 +335,12 @@ TEST(CliModel, RefusesOutputsOntoInputsAndNonFiniteGuidance) {
                             dir),
                         "is also the input");
   EXPECT_EQ(read_file(dir / "run/config.json"), config);
+  // Fine-tuning into the init model's own folder would overwrite it.
+  expect_one_error_line(run("train --config " + (dir / "tiny.json").string() + " --data " +
+                                data.string() + " --init " + run_dir + " --out " + run_dir,
+                            dir),
+                        "is also the input");
+  EXPECT_EQ(read_file(dir / "run/config.json"), config);
   const auto nan = run("sample --model " + run_dir + " --mesh " + mesh +
                            " --num 7 --guidance nan --out " + (dir / "n.h5").string(),
                        dir);

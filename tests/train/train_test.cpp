@@ -401,6 +401,54 @@ TEST(Trainer, BadInputIsOneClearError) {
   EXPECT_THROW(load_trained_model(dir / "mismatch"), Error);
 }
 
+TEST(Trainer, FineTuningStartsFromTheInitModelsWeights) {
+  const ScratchDir dir;
+  const fs::path data = tiny_dataset(dir);
+  TrainConfig config = tiny_config();
+  config.ema_decay = 0.9;
+  train(config, data, dir / "base", 1);
+  export_model(dir / "base", dir / "released");
+  // One step at a vanishing learning rate keeps the released weights (up to the average's
+  // rounding); the same run without --init starts elsewhere. The record names the step.
+  TrainConfig still = config;
+  still.steps = 1;
+  still.learning_rate = 1e-30;
+  still.weight_decay = 0;
+  still.seed = 7;
+  train(still, data, dir / "copy", 1, {}, c10::Device(c10::kCPU), dir / "released");
+  train(still, data, dir / "fresh", 1);
+  EXPECT_TRUE(
+      torch::allclose(run_parameters(dir / "copy"), run_parameters(dir / "released"), 0.0, 1e-6));
+  EXPECT_FALSE(
+      torch::allclose(run_parameters(dir / "fresh"), run_parameters(dir / "released"), 0.0, 1e-3));
+  const auto record = nlohmann::json::parse(read_file(dir / "copy/init.json"));
+  EXPECT_EQ(record["step"], config.steps);
+  // A few steps move them, reproducibly and resumably.
+  TrainConfig tune = config;
+  tune.seed = 7;
+  train(tune, data, dir / "tuned", 1, {}, c10::Device(c10::kCPU), dir / "released");
+  TrainCallbacks stop;
+  stop.step = [](std::int64_t step, std::int64_t) {
+    if (step == 4) throw std::runtime_error("killed");
+  };
+  EXPECT_THROW(train(tune, data, dir / "again", 1, stop, c10::Device(c10::kCPU), dir / "released"),
+               std::runtime_error);
+  EXPECT_EQ(train(tune, data, dir / "again", 1).resumed_from, 3);  // a resume may omit --init
+  EXPECT_TRUE(torch::equal(run_parameters(dir / "tuned"), run_parameters(dir / "again")));
+  EXPECT_FALSE(torch::equal(run_parameters(dir / "tuned"), run_parameters(dir / "released")));
+  // Another init than the run's, an init on a run that had none, another network: errors.
+  EXPECT_THROW(train(tune, data, dir / "tuned", 1, {}, c10::Device(c10::kCPU), dir / "base"),
+               Error);
+  EXPECT_THROW(train(config, data, dir / "base", 1, {}, c10::Device(c10::kCPU), dir / "released"),
+               Error);
+  TrainConfig wider = config;
+  wider.model.field.hidden_widths = {16, 8};
+  EXPECT_THROW(train(wider, data, dir / "wider", 1, {}, c10::Device(c10::kCPU), dir / "released"),
+               Error);
+  EXPECT_THROW(train(config, data, dir / "lost", 1, {}, c10::Device(c10::kCPU), dir / "missing"),
+               Error);
+}
+
 // Flips the sign bit of every parameter's first float in the file at path (tensors are stored
 // uncompressed, so their bytes appear verbatim).
 void flip_first_sign_bits(const fs::path& path, const nn::GraspFlowModel& model) {

@@ -28,6 +28,7 @@ constexpr const char* kConfigFile = "config.json";
 constexpr const char* kCheckpointFile = "checkpoint.pt";
 constexpr const char* kWeightsFile = "model.pt";
 constexpr const char* kLogFile = "log.jsonl";
+constexpr const char* kInitFile = "init.json";  // the model a fine-tuning run started from
 constexpr std::uint64_t kValidationSeed = 12345;
 
 // Sets every parameter group's Adam learning rate.
@@ -178,10 +179,55 @@ void truncate_log(const fs::path& path, std::int64_t step) {
   return lock;
 }
 
+// The run's recorded init model (init.json), empty if it has none.
+std::string recorded_init(const fs::path& run_dir) {
+  const fs::path file = run_dir / kInitFile;
+  if (!fs::exists(file)) return {};
+  std::ifstream in(file);
+  const json record = json::parse(in, nullptr, false);
+  if (!record.is_object() || !record.contains("model") || !record["model"].is_string()) {
+    throw Error(file.string() + ": damaged init record (remove the run folder and start again)");
+  }
+  return record["model"].get<std::string>();
+}
+
+// Checks `init` against the run folder's record: a resume may omit it, any other given init must
+// be the recorded one, and a fresh start must name the recorded one if there is one. Returns
+// init's absolute form (empty if not given).
+std::string checked_init(const fs::path& run_dir, const fs::path& init, bool resuming) {
+  const std::string given = init.empty() ? "" : fs::absolute(init).lexically_normal().string();
+  const std::string recorded = recorded_init(run_dir);
+  if (given == recorded || (resuming ? given.empty() : recorded.empty())) return given;
+  if (recorded.empty()) {
+    throw Error(run_dir.string() + " holds a run that did not start from a model; remove --init " +
+                "or choose another --out");
+  }
+  throw Error(run_dir.string() + " holds a run that started from " + recorded +
+              "; pass --init with that model or choose another --out");
+}
+
+// Copies the init model's weights into model (and the weight average), after checking that its
+// network settings are the config's; records the init in the run folder.
+void start_from(const fs::path& init, const std::string& init_text, const TrainConfig& config,
+                const fs::path& run_dir, const nn::GraspFlowModel& model,
+                const nn::GraspFlowModel& average, c10::Device device) {
+  const TrainedModel source = load_trained_model(init, device);
+  if (to_json(source.config)["model"] != to_json(config)["model"]) {
+    throw Error(init.string() +
+                ": its network settings (\"model\") differ from the config's; --init needs the "
+                "same network");
+  }
+  blend_weights(model, source.model, 0.0);
+  if (average) blend_weights(average, model, 0.0);
+  write_file_atomically(run_dir / kInitFile,
+                        json{{"model", init_text}, {"step", source.step}}.dump(2) + "\n");
+}
+
 }  // namespace
 
 TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs::path& run_dir,
-                  int threads, const TrainCallbacks& callbacks, c10::Device device) {
+                  int threads, const TrainCallbacks& callbacks, c10::Device device,
+                  const fs::path& init) {
   validate(config);
   if (threads < 1) throw Error("train: threads must be ≥ 1");
   at::set_num_threads(threads);
@@ -213,7 +259,12 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
 
   TrainResult result;
   const fs::path checkpoint = run_dir / kCheckpointFile;
-  if (fs::exists(checkpoint)) {
+  const bool resuming = fs::exists(checkpoint);
+  const std::string init_text = checked_init(run_dir, init, resuming);
+  if (!resuming && !init.empty()) {
+    start_from(init, init_text, config, run_dir, model, average, device);
+  }
+  if (resuming) {
     TrainingState state;
     load_checkpoint(checkpoint, *model, &optimizer, &state, average ? average.get() : nullptr);
     sampler.restore(state.sampler_state);
@@ -307,7 +358,8 @@ std::int64_t export_model(const fs::path& run_dir, const fs::path& out_dir) {
 }
 
 std::vector<fs::path> model_folder_files(const fs::path& dir) {
-  return {dir / kConfigFile, dir / kCheckpointFile, dir / kWeightsFile, dir / kLogFile};
+  return {dir / kConfigFile, dir / kCheckpointFile, dir / kWeightsFile, dir / kLogFile,
+          dir / kInitFile};
 }
 
 }  // namespace graspecmf::train

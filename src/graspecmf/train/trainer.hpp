@@ -33,12 +33,15 @@ struct TrainResult {
 // Trains on the dataset's train split (splits.json beside grasps/, else a seeded 80/10/10 split),
 // validating on its val split. `threads` sets LibTorch's intra-op threads; on the CPU results
 // are reproducible for a given thread count. The model trains on `device`; the data sampler and
-// the noise stay on the CPU, so they are the same on every device. Throws Error for a missing or
-// unusable dataset, a run folder made with another configuration, or an unwritable run folder.
+// the noise stay on the CPU, so they are the same on every device. A non-empty `init` (a model or
+// run folder with the same network settings) gives a fresh run its starting weights (fine-tuning;
+// recorded in the run's init.json, and a resume may only name the same one). Throws Error for a
+// missing or unusable dataset or init model, a run folder made with another configuration or
+// init, or an unwritable run folder.
 TrainResult train(const TrainConfig& config, const std::filesystem::path& data_dir,
                   const std::filesystem::path& run_dir, int threads,
-                  const TrainCallbacks& callbacks = {},
-                  c10::Device device = c10::Device(c10::kCPU));
+                  const TrainCallbacks& callbacks = {}, c10::Device device = c10::Device(c10::kCPU),
+                  const std::filesystem::path& init = {});
 
 struct TrainedModel {
   TrainConfig config;
@@ -59,8 +62,8 @@ TrainedModel load_trained_model(const std::filesystem::path& run_dir,
 std::int64_t export_model(const std::filesystem::path& run_dir,
                           const std::filesystem::path& out_dir);
 
-// The files a run or model folder may hold (config, checkpoint, weights, log): the paths an
-// output must never take.
+// The files a run or model folder may hold (config, checkpoint, weights, log, init record): the
+// paths an output must never take.
 std::vector<std::filesystem::path> model_folder_files(const std::filesystem::path& dir);
 
 }  // namespace graspecmf::train
