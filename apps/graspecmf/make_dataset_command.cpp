@@ -29,25 +29,31 @@ struct Preset {
   // labelled with; a --config may not set them.
   const char* fixed_trial;
   geometry::MugFamily family;
+  std::size_t attempts_per_grasp;  // surface points drawn per requested candidate; 0: the default
 };
 // mugs-v1: the project's first training set (docs/dataset.md): 130 mugs × 2000 candidates, 100
 // train / 10 val / 20 test, labelled before the simulator had pad normals and its own convex
 // collider. mugs-v2: the same labelling budget spread over twice the shapes (200 mugs × 1000
 // candidates, 150 / 20 / 30), labelled with both, in the mesh frame (before 2026-12-04). mugs-v3:
 // the varied family (flared lips, uneven surfaces, cups without handles, wider sizes), 180 mugs ×
-// 300 candidates, 140 / 15 / 25, labelled in the simulation frame; the bundled model's training
-// set.
+// 300 candidates, 140 / 15 / 25, labelled in the simulation frame; the bundled model's first
+// training set. mugs-v4: 160 new mugs of the varied family with 20 times mugs-v3's draw budget, so
+// that small and wide mugs get their 300 candidates and enter the split (the bundled model's
+// fine-tuning set).
 constexpr Preset kPresets[] = {
     {"mugs-v1", 130, 10, 20, 2000, 20261122,
      R"({"pad_normal_inset": -1.0, "mujoco_convex": true, "legacy_object_frame": true,
          "contact_reference_mass": 0.0})",
-     geometry::MugFamily::classic},
+     geometry::MugFamily::classic, 0},
     {"mugs-v2", 200, 20, 30, 1000, 20261202,
      R"({"legacy_object_frame": true, "contact_reference_mass": 0.0})",
-     geometry::MugFamily::classic},
+     geometry::MugFamily::classic, 0},
     {"mugs-v3", 180, 15, 25, 300, 20261204,
      R"({"legacy_object_frame": false, "contact_reference_mass": 0.0130879738})",
-     geometry::MugFamily::varied}};
+     geometry::MugFamily::varied, 0},
+    {"mugs-v4", 160, 15, 25, 300, 20261206,
+     R"({"legacy_object_frame": false, "contact_reference_mass": 0.0130879738})",
+     geometry::MugFamily::varied, 1000}};
 
 struct MakeDatasetArgs {
   std::string preset, meshes, out, config_file, cache, family = "varied";
@@ -86,6 +92,7 @@ dataset::MakeDatasetOptions options_from(const MakeDatasetArgs& a) {
                   " fixes the candidates per object and the seed; remove --grasps and --seed");
     }
     o.candidates.num_grasps = preset->grasps;
+    o.candidates.max_attempts = preset->attempts_per_grasp * preset->grasps;
     o.preset = preset->name;
     o.seed = preset->seed;
     o.objects = dataset::procedural_mug_sources(preset->mugs, preset->seed, preset->family);
