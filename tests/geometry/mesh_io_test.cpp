@@ -424,6 +424,14 @@ TEST(ReadMeshErrors, DamagedPolygonData) {
   }
 }
 
+// Found by fuzz_ply_mesh: a PLY header declaring an element twice made assimp free memory it did
+// not own (AddressSanitizer: bad-free in ~Importer); such headers are refused before assimp.
+TEST(ReadMeshErrors, PlyElementDeclaredTwice) {
+  expect_read_error(
+      graspecmf::testing::fuzz_regression("ply_mesh", "assimp_repeated_element_bad_free.ply"),
+      "declared twice");
+}
+
 // Found by fuzz_ply_mesh: a vertical tab before end_header made assimp's PLY reader hang.
 TEST(ReadMeshErrors, PlyHeaderWithControlCharacters) {
   expect_read_error(graspecmf::testing::fuzz_regression("ply_mesh", "assimp_vertical_tab_hang.ply"),

@@ -54,6 +54,11 @@ PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view he
     } else if (keyword == "element") {
       PlyElement element;
       if (!(words >> element.name >> element.count)) throw fail("bad PLY element line: " + line);
+      // Readers look elements up by name; assimp freed memory it did not own on a repeated one.
+      if (std::any_of(header.elements.begin(), header.elements.end(),
+                      [&](const PlyElement& e) { return e.name == element.name; })) {
+        throw fail("the PLY element '" + element.name + "' is declared twice");
+      }
       header.elements.push_back(element);
     } else if (keyword == "property") {
       if (header.elements.empty()) throw fail("PLY property before any element");

@@ -32,9 +32,9 @@ struct PlyHeader {
 };
 
 // Parses the header at the start of head (the whole file or its first bytes) of a file of
-// file_size bytes. Throws Error naming path if it is not a PLY header, a type is unknown, or the
-// declared elements need more bytes than the file has after its header (at least one byte per
-// binary scalar, two characters per ASCII value).
+// file_size bytes. Throws Error naming path if it is not a PLY header, a type is unknown, an
+// element name is declared twice, or the declared elements need more bytes than the file has
+// after its header (at least one byte per binary scalar, two characters per ASCII value).
 PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view head,
                           std::uintmax_t file_size);
 
