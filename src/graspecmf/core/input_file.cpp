@@ -14,7 +14,7 @@ std::string lower_extension(const fs::path& path) {
   return ext;
 }
 
-void check_input_file(const fs::path& path) {
+std::uintmax_t check_input_file(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw Error(path.string() + ": no such file");
   if (!fs::is_regular_file(path, ec)) throw Error(path.string() + ": not a regular file");
@@ -24,13 +24,14 @@ void check_input_file(const fs::path& path) {
     throw Error(path.string() + ": the file has " + std::to_string(size) +
                 " bytes; input files over 1 GiB are refused (decimate or downsample it first)");
   }
+  return size;
 }
 
 std::string read_input_file(const fs::path& path) {
-  check_input_file(path);
+  const std::uintmax_t size = check_input_file(path);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(path.string() + ": the file cannot be opened");
-  std::string bytes(static_cast<std::size_t>(fs::file_size(path)), '\0');
+  std::string bytes(static_cast<std::size_t>(size), '\0');
   in.read(bytes.data(), static_cast<std::streamsize>(bytes.size()));
   if (static_cast<std::size_t>(in.gcount()) != bytes.size()) {
     throw Error(path.string() + ": reading the file failed");

@@ -14,9 +14,9 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{1} << 30;  /
 // The path's extension in lower case with its dot (".obj"); empty if it has none.
 std::string lower_extension(const std::filesystem::path& path);
 
-// Throws Error "<path>: <why>" if the file is missing, not a regular file, or larger than
-// kMaxInputFileBytes.
-void check_input_file(const std::filesystem::path& path);
+// The file's size in bytes; throws Error "<path>: <why>" if the file is missing, not a regular
+// file, or larger than kMaxInputFileBytes.
+std::uintmax_t check_input_file(const std::filesystem::path& path);
 
 // The whole file after check_input_file; throws Error "<path>: <why>" if it cannot be read.
 std::string read_input_file(const std::filesystem::path& path);

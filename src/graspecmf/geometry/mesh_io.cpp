@@ -429,10 +429,7 @@ std::string ply_bytes(const TriangleMesh& mesh) {
 }  // namespace
 
 TriangleMesh read_mesh(const fs::path& path) {
-  with_read_prefix([&] {
-    check_input_file(path);
-    return 0;
-  });
+  with_read_prefix([&] { check_input_file(path); });
   const std::string ext = lower_extension(path);
   TriangleMesh mesh;
   if (ext == ".obj") {

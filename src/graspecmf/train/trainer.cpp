@@ -6,6 +6,7 @@
 #include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 
 #include "graspecmf/core/atomic_file.hpp"
@@ -206,17 +207,21 @@ std::string checked_init(const fs::path& run_dir, const fs::path& init, bool res
               "; pass --init with that model or choose another --out");
 }
 
-// Copies the init model's weights into model (and the weight average), after checking that its
-// network settings are the config's; records the init in the run folder.
-void start_from(const fs::path& init, const std::string& init_text, const TrainConfig& config,
-                const fs::path& run_dir, const nn::GraspFlowModel& model,
-                const nn::GraspFlowModel& average, c10::Device device) {
-  const TrainedModel source = load_trained_model(init, device);
+// The init model on `device`, after checking that its network settings are the config's.
+TrainedModel load_init_model(const fs::path& init, const TrainConfig& config, c10::Device device) {
+  TrainedModel source = load_trained_model(init, device);
   if (to_json(source.config)["model"] != to_json(config)["model"]) {
     throw Error(init.string() +
                 ": its network settings (\"model\") differ from the config's; --init needs the "
                 "same network");
   }
+  return source;
+}
+
+// Copies the init model's weights into model (and the weight average) and records the init
+// (init_text, its absolute path) in the run folder.
+void start_from(const TrainedModel& source, const std::string& init_text, const fs::path& run_dir,
+                const nn::GraspFlowModel& model, const nn::GraspFlowModel& average) {
   blend_weights(model, source.model, 0.0);
   if (average) blend_weights(average, model, 0.0);
   write_file_atomically(run_dir / kInitFile,
@@ -231,6 +236,9 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   validate(config);
   if (threads < 1) throw Error("train: threads must be ≥ 1");
   at::set_num_threads(threads);
+  // A bad init model is refused before the dataset loads and the run folder is made.
+  std::optional<TrainedModel> source;
+  if (!init.empty()) source = load_init_model(init, config, device);
   if (!fs::is_directory(data_dir)) throw Error(data_dir.string() + ": no such dataset folder");
   const data::AcronymDataset dataset = data::AcronymDataset::open(data_dir);
   if (callbacks.skipped) {
@@ -261,15 +269,14 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   const fs::path checkpoint = run_dir / kCheckpointFile;
   const bool resuming = fs::exists(checkpoint);
   const std::string init_text = checked_init(run_dir, init, resuming);
-  if (!resuming && !init.empty()) {
-    start_from(init, init_text, config, run_dir, model, average, device);
-  }
   if (resuming) {
     TrainingState state;
     load_checkpoint(checkpoint, *model, &optimizer, &state, average ? average.get() : nullptr);
     sampler.restore(state.sampler_state);
     generator.set_state(state.generator);
     result.resumed_from = state.step;
+  } else if (source) {
+    start_from(*source, init_text, run_dir, model, average);
   }
   truncate_log(run_dir / kLogFile, result.resumed_from);
   const auto save = [&](std::int64_t step) {
