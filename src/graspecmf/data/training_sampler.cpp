@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/data/network_frame.hpp"
 #include "graspecmf/gripper/panda.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 
@@ -33,22 +34,19 @@ ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,
                                 const std::vector<lie::Pose>& grasps, const Eigen::Matrix3d& g,
                                 double position_scale) {
   if (cloud.points.empty()) throw Error("an object sample needs at least one point");
+  const NetworkFrame frame = NetworkFrame::of_points(cloud.points, g, position_scale);
   ObjectSample sample;
   sample.rotation = g;
   sample.scale = position_scale;
-  Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-  for (const Eigen::Vector3d& q : cloud.points) sum += g * q;
-  sample.centroid = sum / static_cast<double>(cloud.points.size());
+  sample.centroid = frame.centroid;
   const auto push = [&](std::vector<float>& out, const Eigen::Vector3d& v) {
     for (int k = 0; k < 3; ++k) out.push_back(static_cast<float>(v[k]));
   };
-  for (const Eigen::Vector3d& q : cloud.points) {
-    push(sample.points, position_scale * (g * q - sample.centroid));
-  }
+  for (const Eigen::Vector3d& q : cloud.points) push(sample.points, frame.to_network(q));
   for (const lie::Pose& grasp : grasps) {
-    const Eigen::Matrix3d R = g * grasp.R;
-    for (int r = 0; r < 3; ++r) push(sample.rotations, R.row(r).transpose());
-    push(sample.positions, position_scale * (g * grasp.p - sample.centroid));
+    const lie::Pose x = frame.to_network(grasp);
+    for (int r = 0; r < 3; ++r) push(sample.rotations, x.R.row(r).transpose());
+    push(sample.positions, x.p);
   }
   return sample;
 }

@@ -4,10 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <string>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/data/network_frame.hpp"
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/flow/sampler.hpp"
 
@@ -88,18 +88,17 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   at::Tensor points =
       torch::empty({static_cast<int64_t>(parts), static_cast<int64_t>(size), 3}, torch::kFloat);
   auto access = points.accessor<float, 3>();
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();  // the mean of the parts' centroids
+  data::NetworkFrame frame;  // the grasps' frame: the mean of the parts' centroids
+  frame.scale = scale;
   for (std::size_t c = 0; c < parts; ++c) {
-    const auto first = cloud.begin() + static_cast<std::ptrdiff_t>(c * size);
-    const Eigen::Vector3d part_centroid =
-        std::accumulate(first, first + static_cast<std::ptrdiff_t>(size),
-                        Eigen::Vector3d::Zero().eval()) /
-        static_cast<double>(size);
-    centroid += part_centroid / static_cast<double>(parts);
+    const Eigen::Vector3d* first = cloud.data() + c * size;
+    const data::NetworkFrame part =
+        data::NetworkFrame::of_points(first, size, Eigen::Matrix3d::Identity(), scale);
+    frame.centroid += part.centroid / static_cast<double>(parts);
     for (std::size_t i = 0; i < size; ++i) {
+      const Eigen::Vector3d x = part.to_network(first[i]);
       for (int k = 0; k < 3; ++k) {
-        access[static_cast<int64_t>(c)][static_cast<int64_t>(i)][k] = static_cast<float>(
-            scale * (first[static_cast<std::ptrdiff_t>(i)][k] - part_centroid[k]));
+        access[static_cast<int64_t>(c)][static_cast<int64_t>(i)][k] = static_cast<float>(x[k]);
       }
     }
   }
@@ -121,10 +120,10 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
     const at::Tensor p = x1.p.to(torch::kCPU, torch::kDouble).contiguous();
     drawn += count;
     for (std::size_t g = 0; g < count && grasps.size() < n; ++g) {
-      lie::Pose grasp;
-      grasp.R = Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
-          R.data_ptr<double>() + 9 * g);
-      grasp.p = Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g) / scale + centroid;
+      lie::Pose grasp =
+          frame.from_network({Eigen::Map<const Eigen::Matrix<double, 3, 3, Eigen::RowMajor>>(
+                                  R.data_ptr<double>() + 9 * g),
+                              Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g)});
       if (filter != nullptr && filter->refines()) grasp = filter->refined(grasp);
       if (filter == nullptr || filter->keeps(grasp)) grasps.push_back(grasp);
     }
