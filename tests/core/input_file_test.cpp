@@ -48,6 +48,11 @@ TEST(InputFile, MissingFoldersAndHugeFilesAreOneLineErrors) {
   EXPECT_NE(message.find("over 1 GiB"), std::string::npos) << message;
   EXPECT_NE(message.find("huge.obj"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  // A reader with a lower cap (JSON configs) names it.
+  write_file(dir / "five.json", "12345");
+  EXPECT_EQ(read_input_file(dir / "five.json", 5), "12345");
+  graspecmf::testing::expect_error([&] { read_input_file(dir / "five.json", 4); },
+                                   "five.json: the file has 5 bytes; files over 4 bytes");
 }
 
 }  // namespace

@@ -28,6 +28,16 @@ inline std::filesystem::path fuzz_regression(const std::string& target, const st
   return std::filesystem::path(GRASPECMF_DATA_DIR).parent_path() / "fuzz" / "regressions" / target /
          name;
 }
+// The bundled model's weights (models/mugs/model.pt), a LibTorch archive of stored and deflated
+// entries.
+inline std::filesystem::path bundled_weights_file() {
+  return std::filesystem::path(GRASPECMF_DATA_DIR).parent_path() / "models" / "mugs" / "model.pt";
+}
+// A seed of a fuzz target's corpus: fuzz/corpus/TARGET/NAME.
+inline std::filesystem::path fuzz_seed(const std::string& target, const std::string& name) {
+  return std::filesystem::path(GRASPECMF_DATA_DIR).parent_path() / "fuzz" / "corpus" / target /
+         name;
+}
 inline std::filesystem::path gripper_mesh_file() {
   return sample_root() / "franka_gripper_collision_mesh.stl";
 }

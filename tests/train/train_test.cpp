@@ -2,6 +2,7 @@
 #include <torch/torch.h>
 
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 
 #include "../geometry/test_meshes.hpp"
@@ -120,6 +121,23 @@ TEST(TrainConfig, IntegersAreIntegersWithinRange) {
           {"model", {{"encoder", {{"points", 100000}, {"k", 256}}}}}},
          "the limit is 16 GiB");
   EXPECT_EQ(train_config_from_json({{"steps", 12}, {"seed", 7}}).seed, 7u);
+}
+
+TEST(TrainConfig, NumbersAreFiniteAndSlopesInRange) {
+  const auto expect = [](const nlohmann::json& j, const std::string& fragment) {
+    graspecmf::testing::expect_error([&] { train_config_from_json(j); }, fragment);
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  expect({{"learning_rate", inf}}, "every number must be finite");
+  expect({{"data", {{"position_scale", inf}}}}, "every number must be finite");
+  expect({{"model", {{"field", {{"slope", 1.0}}}}}}, "slopes must be in [0, 1)");
+  expect({{"model", {{"encoder", {{"slope", -0.1}}}}}}, "slopes must be in [0, 1)");
+  // A file holding 1e999 is refused, by the parser or by the check above.
+  const graspecmf::testing::ScratchDir dir;
+  graspecmf::testing::write_file(dir / "c.json", R"({"learning_rate": 1e999})");
+  graspecmf::testing::expect_error([&] { read_train_config(dir / "c.json"); }, "c.json: ");
+  graspecmf::testing::expect_error([&] { read_train_config(dir / "absent.json"); },
+                                   "absent.json: no such file");
 }
 
 TEST(Sampling, EndToEndSamplingIsEquivariant) {
@@ -464,7 +482,7 @@ void flip_first_sign_bits(const fs::path& path, const nn::GraspFlowModel& model)
   graspecmf::testing::write_file(path, bytes);
 }
 
-TEST(Checkpoint, DamageIsFoundByTheContentHash) {
+TEST(Checkpoint, DamageIsFoundByTheZipCrcsAndTheContentHash) {
   const ScratchDir dir;
   const TrainConfig config = tiny_config();
   train(config, tiny_dataset(dir), dir / "run", 1);
@@ -473,21 +491,34 @@ TEST(Checkpoint, DamageIsFoundByTheContentHash) {
   nn::GraspFlowModel model(config.model);
   EXPECT_EQ(load_weights(dir / "weights.pt", *model), 6);
   EXPECT_TRUE(torch::equal(flat_parameters(model), flat_parameters(trained.model)));
-  // One sign bit flipped in each weight tensor: the archive still loads, the hash refuses it.
+  // One sign bit flipped in each weight tensor: the ZIP container's CRC-32 refuses it before
+  // LibTorch reads it.
   fs::copy_file(dir / "run/checkpoint.pt", dir / "flipped.pt");
   flip_first_sign_bits(dir / "weights.pt", trained.model);
   flip_first_sign_bits(dir / "flipped.pt", trained.model);
-  expect_error([&] { load_weights(dir / "weights.pt", *model); }, "weights.pt: damaged");
+  expect_error([&] { load_weights(dir / "weights.pt", *model); },
+               "weights.pt: damaged or not a ZIP archive: entry 'archive/data/");
   expect_error([&] { load_checkpoint(dir / "flipped.pt", *model); }, "flipped.pt: damaged");
-  // A truncated file, and an archive written without a content hash, are refused by name.
+  // A truncated file is refused by name.
   const std::string whole = read_file(dir / "run/checkpoint.pt");
   graspecmf::testing::write_file(dir / "truncated.pt", whole.substr(0, whole.size() / 2));
   expect_error([&] { load_checkpoint(dir / "truncated.pt", *model); },
-               "truncated.pt: unreadable or damaged (");
-  torch::serialize::OutputArchive unhashed, weights;
+               "truncated.pt: damaged or not a ZIP archive");
+  // A whole archive whose tensors differ from those the content hash was computed over (another
+  // tool rewrote it, or damage the CRCs were recomputed over), and one with no hash.
+  torch::serialize::OutputArchive stale, weights;
   model->save(weights);
-  unhashed.write("weights", weights);
-  unhashed.save_to((dir / "unhashed.pt").string());
+  stale.write("weights", weights);
+  stale.write("step", torch::tensor({int64_t{6}}, torch::kLong));
+  stale.write(
+      "tensor_count",
+      torch::tensor({static_cast<int64_t>(model->parameters().size() + model->buffers().size())}));
+  stale.save_to((dir / "unhashed.pt").string());
+  expect_error([&] { load_weights(dir / "unhashed.pt", *model); }, "carries no content hash");
+  stale.write("content_hash", torch::tensor({int64_t{12345}}, torch::kLong));
+  stale.save_to((dir / "stale.pt").string());
+  expect_error([&] { load_weights(dir / "stale.pt", *model); },
+               "stale.pt: damaged: its tensors do not match the content hash");
   expect_error([&] { load_weights(dir / "unhashed.pt", *model); }, "carries no content hash");
 }
 

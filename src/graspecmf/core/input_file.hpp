@@ -15,10 +15,12 @@ inline constexpr std::uintmax_t kMaxInputFileBytes = std::uintmax_t{1} << 30;  /
 std::string lower_extension(const std::filesystem::path& path);
 
 // The file's size in bytes; throws Error "<path>: <why>" if the file is missing, not a regular
-// file, or larger than kMaxInputFileBytes.
-std::uintmax_t check_input_file(const std::filesystem::path& path);
+// file, or larger than max_bytes.
+std::uintmax_t check_input_file(const std::filesystem::path& path,
+                                std::uintmax_t max_bytes = kMaxInputFileBytes);
 
 // The whole file after check_input_file; throws Error "<path>: <why>" if it cannot be read.
-std::string read_input_file(const std::filesystem::path& path);
+std::string read_input_file(const std::filesystem::path& path,
+                            std::uintmax_t max_bytes = kMaxInputFileBytes);
 
 }  // namespace graspecmf

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/json_file.hpp"
 #include "graspecmf/core/random.hpp"
 
 namespace graspecmf::data {
@@ -49,14 +49,7 @@ DatasetSplit random_split(std::vector<std::string> names, const SplitFractions& 
 }
 
 DatasetSplit read_split_file(const fs::path& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path.string() + ": cannot open split file");
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(path.string() + ": not valid JSON (" + e.what() + ")");
-  }
+  const nlohmann::json json = read_json_file(path);
   DatasetSplit split;
   std::set<std::string> seen;
   for (const auto& [part, member] : kParts) {

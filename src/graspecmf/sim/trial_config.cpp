@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <nlohmann/json.hpp>
 #include <utility>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/json_file.hpp"
 
 namespace graspecmf::sim {
 namespace {
@@ -126,14 +126,7 @@ TrialConfig trial_config_from_json(const nlohmann::json& json) {
 
 nlohmann::json read_trial_config_json(const std::string& path) {
   if (path.empty()) return nlohmann::json::object();
-  std::ifstream in(path);
-  if (!in) throw Error(path + ": cannot open trial config");
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::exception& e) {
-    throw Error(path + ": not valid JSON (" + e.what() + ")");
-  }
+  const nlohmann::json json = read_json_file(path);
   if (!json.is_object()) throw Error(path + ": a trial config must be a JSON object");
   return json;
 }

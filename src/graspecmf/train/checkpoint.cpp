@@ -8,6 +8,8 @@
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/fnv1a.hpp"
+#include "graspecmf/core/input_file.hpp"
+#include "graspecmf/core/zip_check.hpp"
 
 namespace graspecmf::train {
 namespace fs = std::filesystem;
@@ -90,15 +92,17 @@ void save_archive(torch::serialize::OutputArchive& archive, const fs::path& path
   write_file_atomically(path, bytes.str());
 }
 
-// The archive at path, its tensors on device, after checking its content hash; throws Error if the
-// file is missing, unreadable or damaged.
+// The archive at path, its tensors on device, after checking its ZIP container (so that LibTorch's
+// reader never parses a truncated or damaged file) and its content hash; throws Error if the file
+// is missing, unreadable or damaged.
 torch::serialize::InputArchive load_archive(const fs::path& path, c10::Device device) {
-  if (!fs::exists(path)) throw Error(path.string() + ": no such file");
+  const std::string bytes = read_input_file(path);
+  check_zip_archive(bytes, path.string());
   torch::serialize::InputArchive archive;
   at::Tensor stored;
   Fnv1a hash;
   try {
-    archive.load_from(path.string(), device);
+    archive.load_from(bytes.data(), bytes.size(), device);
     if (!archive.try_read(kHashKey, stored)) {
       throw Error(path.string() +
                   ": carries no content hash, so damage cannot be detected (written before "

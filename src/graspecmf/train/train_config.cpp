@@ -2,12 +2,12 @@
 
 #include <cmath>
 #include <cstdint>
-#include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <type_traits>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/json_file.hpp"
 #include "graspecmf/flow/sampler.hpp"
 
 namespace graspecmf::train {
@@ -77,7 +77,15 @@ void validate(const TrainConfig& c) {
            std::all_of(widths.begin(), widths.end(),
                        [](int64_t w) { return w > 0 && w <= kMaxWidth; });
   };
+  for (const double value : {c.model.encoder.slope, c.model.field.slope, c.data.position_scale,
+                             c.learning_rate, c.weight_decay, c.prior_position_std}) {
+    // JSON has no NaN, but 1e999 parses as infinity.
+    if (!std::isfinite(value)) throw Error("train config: every number must be finite");
+  }
   const nn::EncoderOptions& e = c.model.encoder;
+  if (!(e.slope >= 0 && e.slope < 1) || !(c.model.field.slope >= 0 && c.model.field.slope < 1)) {
+    throw Error("train config: the VN-LeakyReLU slopes must be in [0, 1)");
+  }
   if (!widths_in_range(e.widths)) {
     throw Error("train config: encoder widths must be 1 to 64 layers of 1 to 4096 channels");
   }
@@ -239,14 +247,7 @@ TrainConfig train_config_from_json(const json& j) {
 }
 
 TrainConfig read_train_config(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw Error(path.string() + ": cannot open training config");
-  json j;
-  try {
-    j = json::parse(in);
-  } catch (const json::exception& e) {
-    throw Error(path.string() + ": not valid JSON (" + e.what() + ")");
-  }
+  const json j = read_json_file(path);
   try {
     return train_config_from_json(j);
   } catch (const Error& e) {

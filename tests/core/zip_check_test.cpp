@@ -1,0 +1,104 @@
+#include "graspecmf/core/zip_check.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
+#include "test_support.hpp"
+
+namespace graspecmf {
+namespace {
+
+using testing::bundled_weights_file;
+using testing::expect_error;
+
+// The bundled weights file's bytes.
+const std::string& weights() {
+  static const std::string bytes = read_input_file(bundled_weights_file());
+  return bytes;
+}
+
+// The offset of the data of the entry named `name` (found through its local header).
+std::size_t entry_data(const std::string& bytes, const std::string& name) {
+  const std::size_t at = bytes.find(name);  // local headers come before the central directory
+  EXPECT_NE(at, std::string::npos) << name;
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(bytes[i]); };
+  const std::size_t extra = byte(at - 2) | (byte(at - 1) << 8);
+  return at + name.size() + extra;
+}
+
+// The central-directory entry of `name` (the name's last occurrence), less its 46-byte header.
+std::size_t central_entry(const std::string& bytes, const std::string& name) {
+  return bytes.rfind(name) - 46;
+}
+
+// Expects check_zip_archive to refuse bytes with a message containing fragment.
+void expect_refused(const std::string& bytes, const std::string& fragment) {
+  expect_error([&] { check_zip_archive(bytes, "model.pt"); }, "model.pt: damaged or not a ZIP");
+  expect_error([&] { check_zip_archive(bytes, "model.pt"); }, fragment);
+}
+
+TEST(ZipCheck, AcceptsTheBundledWeightsAndCountsTheirEntries) {
+  // Python's zipfile lists 100 entries: 25 tensors, 72 TorchScript code and debug files (3 of
+  // them deflated), data.pkl, constants.pkl and version.
+  EXPECT_EQ(check_zip_archive(weights(), "model.pt"), 100U);
+}
+
+TEST(ZipCheck, AcceptsArchivesWrittenByPythonsZipfile) {
+  // fuzz/corpus/zip/: stored and deflated entries, a ZIP64 local header, an archive comment and
+  // an empty archive.
+  const std::pair<const char*, std::size_t> seeds[] = {{"stored.zip", 2},
+                                                       {"deflated.zip", 2},
+                                                       {"zip64.zip", 1},
+                                                       {"comment.zip", 1},
+                                                       {"empty_archive.zip", 0}};
+  for (const auto& [name, entries] : seeds) {
+    EXPECT_EQ(check_zip_archive(read_input_file(testing::fuzz_seed("zip", name)), name), entries)
+        << name;
+  }
+}
+
+TEST(ZipCheck, EveryTruncationIsRefused) {
+  const std::string& bytes = weights();
+  for (std::size_t keep = 0; keep < bytes.size(); keep += 4099) {
+    expect_refused(bytes.substr(0, keep), "");
+  }
+  expect_refused(bytes.substr(0, bytes.size() - 1), "no end-of-central-directory record");
+}
+
+TEST(ZipCheck, AFlippedBitInAStoredTensorIsRefused) {
+  std::string bytes = weights();
+  bytes[entry_data(bytes, "archive/data/10") + 2000] ^= 0x80;  // one float's sign bit
+  expect_refused(bytes, "entry 'archive/data/10' does not match its CRC-32");
+}
+
+TEST(ZipCheck, DamagedDeflatedCodeIsRefused) {
+  std::string bytes = weights();
+  bytes[entry_data(bytes, "archive/code/__torch__.py") + 3] ^= 0x01;
+  expect_refused(bytes, "entry 'archive/code/__torch__.py'");
+}
+
+TEST(ZipCheck, DamagedCentralDirectoryIsRefused) {
+  std::string crc = weights();
+  crc[central_entry(crc, "archive/data.pkl") + 16] ^= 0x01;  // its recorded CRC-32
+  expect_refused(crc, "entry 'archive/data.pkl' does not match its CRC-32");
+
+  std::string method = weights();
+  method[central_entry(method, "archive/data.pkl") + 10] = 12;  // bzip2
+  expect_refused(method, "compression method 12");
+
+  std::string offset = weights();
+  offset[central_entry(offset, "archive/data.pkl") + 45] = 0x7f;  // local header far past the end
+  expect_refused(offset, "local header is missing or misplaced");
+}
+
+TEST(ZipCheck, TrailingBytesAndEmptyInputAreRefused) {
+  expect_refused(weights() + "x", "no end-of-central-directory record");
+  expect_refused("", "shorter than an end-of-central-directory record");
+  expect_refused(std::string(100, '\0'), "no end-of-central-directory record");
+}
+
+}  // namespace
+}  // namespace graspecmf
