@@ -7,16 +7,15 @@
 #include <torch/torch.h>
 
 #include "graspecmf/core/heap_retention.hpp"
-#include "graspecmf/flow/loss.hpp"
-#include "graspecmf/flow/path.hpp"
 #include "graspecmf/flow/prior.hpp"
-#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/models/grasp_sampling.hpp"
+#include "graspecmf/models/graspecmf_generator.hpp"
 
 namespace {
 
-using graspecmf::nn::GraspFlowModel;
-using graspecmf::train::SamplingSettings;
-using graspecmf::train::TrainConfig;
+using graspecmf::models::GraspEcmfGenerator;
+using graspecmf::models::SamplingSettings;
+using graspecmf::models::TrainConfig;
 
 // Reported in the benchmark's context line as heap_retention: on/off.
 const bool kHeapRetained = [] {
@@ -24,14 +23,18 @@ const bool kHeapRetained = [] {
   return true;
 }();
 
-const GraspFlowModel& paper_model() {
-  static const GraspFlowModel model = [] {
+// The paper-sized GraspECMF generator (the default config), in eval mode.
+const GraspEcmfGenerator& paper_model() {
+  static const std::shared_ptr<GraspEcmfGenerator> model = [] {
     torch::manual_seed(0);
-    GraspFlowModel m{graspecmf::nn::GraspFlowModelOptions{}};
+    const TrainConfig config;
+    auto m = std::make_shared<GraspEcmfGenerator>(
+        graspecmf::nn::GraspFlowModelOptions{config.model.encoder, config.model.field},
+        config.prior_position_std, config.cfg_drop);
     m->eval();
     return m;
   }();
-  return model;
+  return *model;
 }
 
 // The machine's float32 matrix-product rate, the yardstick for the model's FLOP counts.
@@ -48,7 +51,7 @@ void BM_Encoder1024(benchmark::State& state) {
   at::set_num_threads(static_cast<int>(state.range(0)));
   torch::NoGradGuard no_grad;
   const at::Tensor points = torch::randn({1, 1024, 3});
-  for (auto _ : state) benchmark::DoNotOptimize(paper_model()->encoder->forward(points));
+  for (auto _ : state) benchmark::DoNotOptimize(paper_model().network()->encoder->forward(points));
 }
 BENCHMARK(BM_Encoder1024)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -68,7 +71,7 @@ void BM_SampleGrasps(benchmark::State& state) {
   const TrainConfig config;
   for (auto _ : state) {
     benchmark::DoNotOptimize(
-        graspecmf::train::sample_grasps(paper_model(), cloud, config, n, settings, 3));
+        graspecmf::models::sample_grasps(paper_model(), cloud, config, n, settings, 3));
   }
   state.counters["grasps/s"] =
       benchmark::Counter(static_cast<double>(n) * state.iterations(), benchmark::Counter::kIsRate);
@@ -84,21 +87,14 @@ BENCHMARK(BM_SampleGrasps)
 void BM_TrainingStep(benchmark::State& state) {
   at::set_num_threads(static_cast<int>(state.range(0)));
   torch::manual_seed(0);
-  GraspFlowModel model{graspecmf::nn::GraspFlowModelOptions{}};
+  const graspecmf::models::Generator model = graspecmf::models::make_generator(TrainConfig{});
   torch::optim::Adam optimizer(model->parameters(), torch::optim::AdamOptions(1e-4));
   at::Generator generator = graspecmf::flow::make_generator(1);
-  const at::Tensor points = torch::randn({4, 1024, 3});
-  const graspecmf::flow::PoseBatch x1 = graspecmf::flow::sample_prior(1200, 1.0, generator);
-  const at::Tensor index = torch::arange(4).repeat_interleave(300);
+  const graspecmf::models::TrainingBatch batch{torch::randn({4, 1024, 3}),
+                                               torch::arange(4).repeat_interleave(300),
+                                               graspecmf::flow::sample_prior(1200, 1.0, generator)};
   for (auto _ : state) {
-    const graspecmf::flow::PoseBatch x0 = graspecmf::flow::sample_prior(1200, 1.0, generator);
-    const at::Tensor t = at::rand({1200}, generator, torch::kFloat);
-    const auto path = graspecmf::flow::geodesic_path(x0, x1, t);
-    const auto keep = graspecmf::flow::cfg_keep_mask(1200, 0.2, generator);
-    const auto velocity =
-        model->forward(model->condition(points), index, path.x_t.R, path.x_t.p, t, keep);
-    const at::Tensor loss =
-        graspecmf::flow::flow_matching_loss(velocity.omega, velocity.v, path.omega, path.v);
+    const at::Tensor loss = model->loss(batch, generator);
     optimizer.zero_grad();
     loss.backward();
     optimizer.step();

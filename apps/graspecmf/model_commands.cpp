@@ -9,7 +9,6 @@
 #include <limits>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <numeric>
 #include <optional>
 #include <vector>
 
@@ -22,20 +21,17 @@
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/splits.hpp"
+#include "graspecmf/eval/evaluate.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/object_size.hpp"
 #include "graspecmf/geometry/point_cloud_io.hpp"
-#include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
-#include "graspecmf/geometry/watertight_cache.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/gripper/panda.hpp"
-#include "graspecmf/metrics/paired_comparison.hpp"
-#include "graspecmf/sim/batch.hpp"
-#include "graspecmf/sim/scene_object.hpp"
-#include "graspecmf/train/device.hpp"
-#include "graspecmf/train/evaluation.hpp"
-#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/models/device.hpp"
+#include "graspecmf/models/grasp_sampling.hpp"
+#include "graspecmf/models/model_folder.hpp"
+#include "graspecmf/sim/trial_config.hpp"
 #include "graspecmf/train/trainer.hpp"
 #include "object_units.hpp"
 
@@ -58,8 +54,8 @@ void run_train(const TrainArgs& a) {
   std::vector<fs::path> input_folders{a.data};
   if (!a.init.empty()) input_folders.emplace_back(a.init);
   require_distinct_output("--out", a.out, {a.config}, input_folders);
-  const train::TrainConfig config = train::read_train_config(a.config);
-  const c10::Device device = train::parse_device(a.device);
+  const models::TrainConfig config = models::read_train_config(a.config);
+  const c10::Device device = models::parse_device(a.device);
   std::unique_ptr<ProgressLine> progress;
   train::TrainCallbacks callbacks;
   callbacks.step = [&](std::int64_t step, std::int64_t total) {
@@ -95,7 +91,7 @@ struct SamplingOverrides {
   double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's
   int clouds = 0;                                              // 0: the run's
 
-  train::SamplingSettings apply(train::SamplingSettings settings) const {
+  models::SamplingSettings apply(models::SamplingSettings settings) const {
     if (!solver.empty()) settings.solver = solver;
     if (steps > 0) settings.steps = steps;
     if (!std::isnan(guidance)) settings.guidance = guidance;
@@ -138,17 +134,6 @@ void add_filter_flags(CLI::App* cmd, gripper::GraspChecks& checks, const std::st
                 fmt::format("Keep only {} with some of {} between the open fingers at least "
                             "{:g} cm below the fingertips; not in the paper",
                             whose, points, 100 * gripper::kMinGraspDepth));
-}
-
-// The filter in a one-line summary: "", or e.g. ", refined, colliding and shallow grasps
-// rejected".
-std::string filter_note(const gripper::GraspChecks& checks) {
-  const std::string refined = checks.refine ? ", refined" : "";
-  if (!checks.rejects()) return refined;
-  return fmt::format("{}, {} grasps rejected", refined,
-                     checks.collisions && checks.shallow ? "colliding and shallow"
-                     : checks.collisions                 ? "colliding"
-                                                         : "shallow");
 }
 
 // ---- sample ----
@@ -213,13 +198,13 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
 
 void run_sample(const SampleArgs& a) {
   const fs::path model = model_or_bundled(a.model);
-  std::vector<fs::path> inputs = train::model_folder_files(model);
+  std::vector<fs::path> inputs = models::model_folder_files(model);
   inputs.insert(inputs.end(), {a.mesh, a.points, a.acronym});
   require_distinct_output("--out", a.out, inputs);
   at::set_num_threads(a.threads);
-  const train::TrainedModel trained =
-      train::load_trained_model(model, train::parse_device(a.device));
-  const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
+  const models::TrainedModel trained =
+      models::load_trained_model(model, models::parse_device(a.device));
+  const models::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   const auto clouds = static_cast<std::size_t>(settings.clouds);
   const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
   const SampleInput input = sample_input(a, clouds * points);
@@ -233,8 +218,8 @@ void run_sample(const SampleArgs& a) {
   if (a.checks.any()) filter.emplace(input.filter_points, a.checks);
   const auto start = std::chrono::steady_clock::now();
   const std::vector<lie::Pose> grasps =
-      train::sample_grasps(trained.model, input.cloud, trained.config, a.num, settings, a.seed,
-                           filter ? &*filter : nullptr);
+      models::sample_grasps(*trained.model, input.cloud, trained.config, a.num, settings, a.seed,
+                            filter ? &*filter : nullptr);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   data::AcronymGraspFile record;
@@ -244,7 +229,7 @@ void run_sample(const SampleArgs& a) {
   data::write_acronym_file(record, a.out);
   std::cout << fmt::format("{} grasps ({} {} steps, guidance {}{}) in {:.2f} s → {}\n", a.num,
                            settings.solver, settings.steps, settings.guidance,
-                           filter_note(a.checks), seconds, a.out);
+                           eval::filter_note(a.checks), seconds, a.out);
 }
 
 // ---- evaluate ----
@@ -299,232 +284,46 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
   return split_objects(a.data, a.split);
 }
 
-// The first `count` grasps of a list (all of them if it is shorter).
-std::vector<lie::Pose> first(const std::vector<lie::Pose>& grasps, std::size_t count) {
-  return {grasps.begin(),
-          grasps.begin() + static_cast<std::ptrdiff_t>(std::min(count, grasps.size()))};
-}
-
-// Simulated outcomes of the first `count` grasps of each list, summed over the lists.
-sim::GraspOutcomes simulated_outcomes(const sim::SceneObject& scene,
-                                      const geometry::MeshRayCaster& mesh,
-                                      const std::vector<std::vector<lie::Pose>>& lists,
-                                      std::size_t count, const sim::TrialConfig& config,
-                                      int threads) {
-  sim::GraspOutcomes total;
-  for (const std::vector<lie::Pose>& grasps : lists) {
-    total += sim::grasp_outcomes(scene, mesh, first(grasps, count), config, threads);
-  }
-  return total;
-}
-
-nlohmann::json success_json(const sim::SuccessCount& c) {
-  return {{"successes", c.successes}, {"trials", c.trials}, {"rate", c.rate()}};
-}
-
-// The success count's JSON plus the collision rate and the success of the collision-free grasps.
-nlohmann::json outcomes_json(const sim::GraspOutcomes& o) {
-  json j = success_json(o.all);
-  j["collision_rate"] = o.collision_rate();
-  j["collision_free"] = success_json(o.collision_free);
-  return j;
-}
-
-// "71.0 % (12 % collide)" for a table cell.
-std::string outcomes_cell(const sim::GraspOutcomes& o) {
-  return fmt::format("{:.1f} % ({:.0f} % collide)", 100 * o.all.rate(), 100 * o.collision_rate());
-}
-
-nlohmann::json comparison_json(const metrics::PairedComparison& c) {
-  return {{"wins", c.wins},
-          {"losses", c.losses},
-          {"sign_test_p", c.sign_test_p},
-          {"mean_difference", c.mean_difference},
-          {"ci_95", {c.ci_low, c.ci_high}}};
-}
-
 void run_evaluate(const EvaluateArgs& a) {
   const std::string model = model_or_bundled(a.model).string();
-  std::vector<fs::path> inputs = train::model_folder_files(model);
+  std::vector<fs::path> inputs = models::model_folder_files(model);
   inputs.insert(inputs.end(), {a.acronym, a.sim_config});
   for (const auto& [option, out] : {std::pair{"--out", a.out}, {"--markdown", a.markdown}}) {
     require_distinct_output(option, out, inputs, {a.data, a.train_data});
   }
   require_distinct_output("--markdown", a.markdown, {a.out});
   at::set_num_threads(a.threads);
-  const train::TrainedModel trained =
-      train::load_trained_model(model, train::parse_device(a.device));
+  const models::TrainedModel trained =
+      models::load_trained_model(model, models::parse_device(a.device));
   const std::vector<data::GraspObject> objects = evaluation_objects(a);
   std::vector<data::GraspObject> training;
-  std::optional<train::TrainingShapes> shapes;
   if (a.baselines) {
     const std::string root = a.train_data.empty() ? a.data : a.train_data;
     if (root.empty()) throw Error("evaluate: --baselines with --acronym needs --train-data DIR");
     training = split_objects(root, "train");
-    shapes.emplace(training, a.seed);
   }
-  const train::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
   if (a.success == 0 && !(a.sim_config.empty() && a.cache.empty())) {
     throw Error("evaluate: --sim-config and --cache apply only with --success K");
   }
-  const sim::TrialConfig trial_config = sim::read_trial_config(a.sim_config);
+  eval::EvaluationOptions options;
+  options.num = a.num;
+  options.success = a.success;
+  options.checks = a.checks;
+  options.sampling = a.sampling.apply(trained.config.sampling);
+  options.seed = a.seed;
+  options.threads = a.threads;
+  options.trial = sim::read_trial_config(a.sim_config);
+  options.cache = a.cache;
   ProgressLine progress("evaluating", objects.size());
-  json per_object = json::array();
-  double total = 0, total_random = 0;
-  std::vector<double> model_emds, nearest_emds;
-  // Objects with a sampling floor (≥ 2n successful grasps): model, nearest and floor EMDs.
-  std::vector<double> floored_model, floored_nearest, floor_emds;
-  sim::GraspOutcomes model_success, nearest_success;
-  std::vector<double> model_failure_rates, nearest_failure_rates;  // lower is better, as EMDs
-  std::string table =
-      a.baselines ? "| object | n | EMD (3 rotations) | mean | random | nearest training object | "
-                    "floor |"
-                  : "| object | n | EMD (3 rotations) | mean |";
-  if (a.success > 0) table += a.baselines ? " success | nearest's success |" : " success |";
-  const auto columns = std::count(table.begin(), table.end(), '|') - 1;
-  table += "\n|";
-  for (std::ptrdiff_t c = 0; c < columns; ++c) table += "---|";
-  table += "\n";
-  for (std::size_t i = 0; i < objects.size(); ++i) {
-    const data::GraspObject& object = objects[i];
-    const std::size_t n = a.num == 0 ? object.grasps.size() : a.num;
-    const train::ObjectFilter filter = train::object_filter(object, a.checks, a.seed);
-    const train::ObjectEvaluation e =
-        train::evaluate_object(trained.model, object, trained.config, train::test_rotations(), n,
-                               settings, a.seed, filter);
-    json entry = {{"object", e.name}, {"n", e.n}, {"emd", e.emd}, {"mean_emd", e.mean_emd}};
-    table += fmt::format("| {} | {} | {:.4f} {:.4f} {:.4f} | {:.4f} |", e.name, e.n, e.emd[0],
-                         e.emd[1], e.emd[2], e.mean_emd);
-    std::optional<train::BaselineEvaluation> baseline;
-    if (a.baselines) {
-      const train::BaselineEvaluation& b =
-          baseline.emplace(train::evaluate_baselines(object, *shapes, n, a.seed, filter));
-      entry["random_emd"] = b.random_emd;
-      entry["nearest_training_object"] = b.nearest;
-      entry["nearest_emd"] = b.nearest_emd;
-      entry["nearest_n"] = b.nearest_n;
-      entry["floor_emd"] = b.floor_emd ? json(*b.floor_emd) : json(nullptr);
-      table += fmt::format(" {:.4f} | {:.4f} ({}{}) | {} |", b.random_emd, b.nearest_emd, b.nearest,
-                           b.nearest_n < e.n ? fmt::format(", n = {}", b.nearest_n) : "",
-                           b.floor_emd ? fmt::format("{:.4f}", *b.floor_emd) : "n/a");
-      total_random += b.random_emd;
-      model_emds.push_back(e.mean_emd);
-      nearest_emds.push_back(b.nearest_emd);
-      if (b.floor_emd) {
-        floored_model.push_back(e.mean_emd);
-        floored_nearest.push_back(b.nearest_emd);
-        floor_emds.push_back(*b.floor_emd);
-      }
-    }
-    if (a.success > 0) {
-      // The simulator needs a closed solid: an open --acronym mesh is alpha-wrapped, with a note.
-      const geometry::ClosedMesh closed =
-          geometry::closed_mesh_for_simulation(object.mesh, object.name);
-      if (closed.repaired) {
-        std::cerr << "note: " << geometry::repair_note(object.name, closed.report) << "\n";
-      }
-      const sim::SceneObject scene = sim::make_scene_object(
-          closed.mesh, object.info, trial_config, {},
-          a.cache.empty() ? sim::default_decomposition_cache() : fs::path(a.cache));
-      const geometry::MeshRayCaster mesh(closed.mesh);
-      const sim::GraspOutcomes s =
-          simulated_outcomes(scene, mesh, e.generated, a.success, trial_config, a.threads);
-      entry["success"] = outcomes_json(s);
-      table += " " + outcomes_cell(s) + " |";
-      model_success += s;
-      model_failure_rates.push_back(1 - s.all.rate());
-      if (baseline) {
-        const sim::GraspOutcomes ns = simulated_outcomes(scene, mesh, {baseline->nearest_grasps},
-                                                         a.success, trial_config, a.threads);
-        entry["nearest_success"] = outcomes_json(ns);
-        table += " " + outcomes_cell(ns) + " |";
-        nearest_success += ns;
-        nearest_failure_rates.push_back(1 - ns.all.rate());
-      }
-    }
-    table += "\n";
-    per_object.push_back(entry);
-    total += e.mean_emd;
-    progress.update(i + 1);
-  }
+  eval::EvaluationCallbacks callbacks;
+  callbacks.progress = [&](std::size_t done, std::size_t) { progress.update(done); };
+  callbacks.note = [](const std::string& text) { std::cerr << "note: " << text << "\n"; };
+  const eval::EvaluationReport report = eval::evaluate_model(
+      trained, model, objects, a.baselines ? &training : nullptr, options, callbacks);
   progress.finish();
-  const double count = static_cast<double>(objects.size());
-  json report = {{"model", model},
-                 {"step", trained.step},
-                 {"sampling",
-                  {{"solver", settings.solver},
-                   {"steps", settings.steps},
-                   {"guidance", settings.guidance},
-                   {"clouds", settings.clouds},
-                   {"refine", a.checks.refine},
-                   {"reject_collisions", a.checks.collisions},
-                   {"reject_shallow", a.checks.shallow}}},
-                 {"seed", a.seed},
-                 {"objects", per_object},
-                 {"mean_emd", total / count}};
-  std::string summary =
-      fmt::format("mean EMD over {} objects: {:.4f}", objects.size(), total / count);
-  if (a.baselines) {
-    const double mean_nearest =
-        std::accumulate(nearest_emds.begin(), nearest_emds.end(), 0.0) / count;
-    report["mean_random_emd"] = total_random / count;
-    report["mean_nearest_emd"] = mean_nearest;
-    const metrics::PairedComparison c = metrics::compare_paired(model_emds, nearest_emds, a.seed);
-    report["objects_below_nearest"] = c.wins;
-    report["nearest_comparison"] = comparison_json(c);
-    summary += fmt::format(
-        " (random grasps {:.4f}, nearest training object {:.4f}; the model is below the nearest "
-        "object on {} of {}, sign test p = {:.3g}; nearest minus model: mean {:+.4f}, 95 % "
-        "bootstrap interval [{:+.4f}, {:+.4f}])",
-        total_random / count, mean_nearest, c.wins, objects.size(), c.sign_test_p,
-        c.mean_difference, c.ci_low, c.ci_high);
-    if (floor_emds.size() == objects.size()) {
-      const double mean_floor = std::accumulate(floor_emds.begin(), floor_emds.end(), 0.0) / count;
-      report["mean_floor_emd"] = mean_floor;
-      summary += fmt::format("; sampling floor {:.4f}", mean_floor);
-    }
-    if (!floor_emds.empty()) {
-      const metrics::FloorComparison f =
-          metrics::compare_with_floor(floored_model, floored_nearest, floor_emds);
-      report["floor_comparison"] = {{"objects", f.objects},
-                                    {"model_below_nearest", f.model_wins},
-                                    {"floor_below_nearest", f.floor_wins},
-                                    {"median_model_excess", f.median_excess}};
-      summary += fmt::format(
-          "; on the {} objects with a floor, the model is below the nearest object on {}, a "
-          "second draw of each object's own grasps (a perfect sampler) on {}, and the model's "
-          "median excess over the floor is {:+.4f}",
-          f.objects, f.model_wins, f.floor_wins, f.median_excess);
-    }
-  }
-  if (a.success > 0) {
-    report["success"] = outcomes_json(model_success);
-    summary += fmt::format(
-        "; simulated success {:.1f} % ({} of {} grasps; {:.1f} % start in collision with the "
-        "object, {:.1f} % success among the others)",
-        100 * model_success.all.rate(), model_success.all.successes, model_success.all.trials,
-        100 * model_success.collision_rate(), 100 * model_success.collision_free.rate());
-    if (a.baselines) {
-      // Failure rates are lower-is-better, so the comparison reads like the EMD one.
-      const metrics::PairedComparison c =
-          metrics::compare_paired(model_failure_rates, nearest_failure_rates, a.seed);
-      report["nearest_success"] = outcomes_json(nearest_success);
-      report["nearest_success_comparison"] = comparison_json(c);
-      summary += fmt::format(
-          " against {:.1f} % for the nearest training object's grasps ({:.1f} % in collision; "
-          "the model is higher on {} objects, lower on {}, sign test p = {:.3g})",
-          100 * nearest_success.all.rate(), 100 * nearest_success.collision_rate(), c.wins,
-          c.losses, c.sign_test_p);
-    }
-  }
-  std::cout << table << summary << "\n";
-  if (!a.out.empty()) write_file_atomically(a.out, report.dump(1) + "\n");
-  if (!a.markdown.empty()) {
-    write_file_atomically(
-        a.markdown, fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", model,
-                                trained.step, settings.solver, settings.steps, settings.guidance,
-                                filter_note(a.checks), table, summary));
-  }
+  std::cout << eval::markdown_table(report) << eval::summary(report) << "\n";
+  if (!a.out.empty()) write_file_atomically(a.out, eval::to_json(report).dump(1) + "\n");
+  if (!a.markdown.empty()) write_file_atomically(a.markdown, eval::to_markdown(report));
 }
 
 }  // namespace
@@ -553,7 +352,7 @@ void add_model_commands(CLI::App& app) {
   export_cmd->add_option("--out", x->second, "Output folder (config.json, model.pt)")->required();
   export_cmd->callback([x] {
     require_distinct_output("--out", x->second, {}, {x->first});
-    const std::int64_t step = train::export_model(x->first, x->second);
+    const std::int64_t step = models::export_model(x->first, x->second);
     std::cout << fmt::format("exported step {} of {} → {}\n", step, x->first, x->second);
   });
 

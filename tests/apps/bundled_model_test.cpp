@@ -12,14 +12,14 @@
 
 #include "../sim/sample_mug.hpp"
 #include "graspecmf/core/random.hpp"
+#include "graspecmf/eval/evaluation.hpp"
 #include "graspecmf/geometry/ray_cast.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/metrics/emd.hpp"
+#include "graspecmf/models/grasp_sampling.hpp"
+#include "graspecmf/models/model_folder.hpp"
 #include "graspecmf/sim/batch.hpp"
-#include "graspecmf/train/evaluation.hpp"
-#include "graspecmf/train/grasp_sampling.hpp"
-#include "graspecmf/train/trainer.hpp"
 
 namespace graspecmf {
 namespace {
@@ -43,7 +43,7 @@ std::filesystem::path our_labels_file() {
 struct Gate : public ::testing::Test {
   static void SetUpTestSuite() { at::set_num_threads(1); }
 
-  train::TrainedModel model = train::load_trained_model(apps::bundled_model_dir());
+  models::TrainedModel model = models::load_trained_model(apps::bundled_model_dir());
   geometry::TriangleMesh mesh =
       geometry::scaled(geometry::read_mesh(testing::sample_mesh_file()),
                        data::read_acronym_file(testing::sample_grasp_file()).object.scale);
@@ -51,13 +51,13 @@ struct Gate : public ::testing::Test {
   // kGrasps grasps for the mug's cloud (seed 1) turned by `turn`, from prior seed `seed`, in the
   // mug's frame, sampled as `graspecmf sample` does by default.
   std::vector<lie::Pose> generate(std::uint64_t seed, const Eigen::Matrix3d& turn) const {
-    const train::SamplingSettings& settings = model.config.sampling;
+    const models::SamplingSettings& settings = model.config.sampling;
     const std::size_t points = static_cast<std::size_t>(settings.clouds) *
                                static_cast<std::size_t>(model.config.model.encoder.points);
     std::vector<Eigen::Vector3d> cloud = geometry::sample_surface(mesh, points, 1).points;
     for (Eigen::Vector3d& q : cloud) q = turn * q;
     std::vector<lie::Pose> grasps =
-        train::sample_grasps(model.model, cloud, model.config, kGrasps, settings, seed);
+        models::sample_grasps(*model.model, cloud, model.config, kGrasps, settings, seed);
     for (lie::Pose& g : grasps) g = {turn.transpose() * g.R, turn.transpose() * g.p};
     return grasps;
   }
@@ -96,7 +96,7 @@ TEST_F(Gate, SampleMugGraspsAreCloseToOurSuccessfulGraspsAndHold) {
 }
 
 TEST_F(Gate, RotatedMugGetsTheRotatedGraspDistribution) {
-  const Eigen::Matrix3d turn = train::test_rotations().front();
+  const Eigen::Matrix3d turn = eval::test_rotations().front();
   const std::vector<lie::Pose> base = generate(2, Eigen::Matrix3d::Identity());
   const double seeds =
       metrics::earth_movers_distance(base, generate(3, Eigen::Matrix3d::Identity()));

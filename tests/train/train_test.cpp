@@ -8,25 +8,35 @@
 #include "../geometry/test_meshes.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/eval/evaluation.hpp"
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/lie/rotation_sets.hpp"
 #include "graspecmf/metrics/emd.hpp"
-#include "graspecmf/train/checkpoint.hpp"
-#include "graspecmf/train/device.hpp"
-#include "graspecmf/train/evaluation.hpp"
-#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/models/checkpoint.hpp"
+#include "graspecmf/models/device.hpp"
+#include "graspecmf/models/grasp_sampling.hpp"
+#include "graspecmf/models/model_folder.hpp"
 #include "graspecmf/train/trainer.hpp"
+#include "run_inspection.hpp"
 #include "test_support.hpp"
+#include "tiny_config.hpp"
 #include "tiny_dataset.hpp"
 
+// Training, with the model-folder, sampling and evaluation code it drives.
 namespace graspecmf::train {
 namespace {
+using namespace models;  // NOLINT: the tests exercise these layers together
+using namespace eval;    // NOLINT
 
 namespace fs = std::filesystem;
 using graspecmf::testing::expect_error;
+using graspecmf::testing::flat_parameters;
+using graspecmf::testing::logged_losses;
 using graspecmf::testing::read_file;
+using graspecmf::testing::run_parameters;
 using graspecmf::testing::ScratchDir;
+using graspecmf::testing::tiny_config;
 using graspecmf::testing::tiny_dataset;
 
 class OneThread : public ::testing::Environment {
@@ -34,28 +44,6 @@ class OneThread : public ::testing::Environment {
   void SetUp() override { at::set_num_threads(1); }
 };
 const auto* const kOneThread = ::testing::AddGlobalTestEnvironment(new OneThread);
-
-// A model small enough to train for a few steps in a test.
-TrainConfig tiny_config() {
-  TrainConfig c;
-  c.model.encoder.widths = {4, 4, 4, 4, 4};
-  c.model.encoder.k = 4;
-  c.model.encoder.out_channels = 6;
-  c.model.encoder.points = 32;
-  c.model.field.z_channels = 6;
-  c.model.field.hidden_widths = {8, 8};
-  c.data.points = 32;
-  c.data.objects_per_step = 2;
-  c.data.grasps_per_object = 8;
-  c.steps = 6;
-  c.log_every = 1;
-  c.checkpoint_every = 3;
-  c.validate_every = 0;
-  c.validation_grasps = 4;
-  c.validation_objects = 1;
-  c.sampling.steps = 2;
-  return c;
-}
 
 TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
   const fs::path configs = fs::path(GRASPECMF_DATA_DIR) / ".." / "configs";
@@ -140,31 +128,6 @@ TEST(TrainConfig, NumbersAreFiniteAndSlopesInRange) {
                                    "absent.json: no such file");
 }
 
-TEST(Sampling, EndToEndSamplingIsEquivariant) {
-  torch::manual_seed(1);
-  const TrainConfig config = tiny_config();
-  const nn::GraspFlowModel model(config.model);
-  const at::Tensor points = torch::randn({32, 3});
-  at::Generator generator = flow::make_generator(2);
-  const flow::PoseBatch x0 = flow::sample_prior(16, 1.0, generator);
-  const Eigen::Matrix3d g = lie::random_rotations(1, 5)[0];
-  const at::Tensor G = torch::from_blob(const_cast<double*>(Eigen::Matrix3d(g.transpose()).data()),
-                                        {3, 3}, torch::kDouble)
-                           .to(torch::kFloat);  // row-major g
-  for (const char* solver : {"euler", "rkmk4"}) {
-    SamplingSettings settings;
-    settings.solver = solver;
-    settings.steps = 5;
-    const flow::PoseBatch x = integrate_grasps(model, points, x0, settings);
-    const flow::PoseBatch gx = integrate_grasps(
-        model, points.matmul(G.t()), {torch::matmul(G, x0.R), x0.p.matmul(G.t())}, settings);
-    const double scale = x.R.norm().item<double>() + x.p.norm().item<double>();
-    const double error = (gx.R - torch::matmul(G, x.R)).norm().item<double>() +
-                         (gx.p - x.p.matmul(G.t())).norm().item<double>();
-    EXPECT_LT(error / scale, 1e-4) << solver;
-  }
-}
-
 // 40 seeded normal points with standard deviation `spread`.
 std::vector<Eigen::Vector3d> normal_cloud(double spread) {
   std::vector<Eigen::Vector3d> cloud;
@@ -179,34 +142,34 @@ std::vector<Eigen::Vector3d> normal_cloud(double spread) {
 TEST(Sampling, GraspsFollowTheCloudsPosition) {
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();
-  const nn::GraspFlowModel model(config.model);
+  const Generator model = make_generator(config);
   std::vector<Eigen::Vector3d> cloud = normal_cloud(1.0);
   std::vector<Eigen::Vector3d> shifted = cloud;
   for (Eigen::Vector3d& q : shifted) q += Eigen::Vector3d(0.3, -0.2, 1.0);
-  const auto a = sample_grasps(model, cloud, config, 5, config.sampling, 9);
-  const auto b = sample_grasps(model, shifted, config, 5, config.sampling, 9);
+  const auto a = sample_grasps(*model, cloud, config, 5, config.sampling, 9);
+  const auto b = sample_grasps(*model, shifted, config, 5, config.sampling, 9);
   for (std::size_t i = 0; i < 5; ++i) {
     EXPECT_LT((b[i].p - a[i].p - Eigen::Vector3d(0.3, -0.2, 1.0)).norm(), 1e-5);
     EXPECT_LT((b[i].R - a[i].R).norm(), 1e-5);
     EXPECT_LT((a[i].R.transpose() * a[i].R - Eigen::Matrix3d::Identity()).norm(), 1e-5);
   }
-  EXPECT_THROW(sample_grasps(model, {}, config, 5, config.sampling, 9), Error);
+  EXPECT_THROW(sample_grasps(*model, {}, config, 5, config.sampling, 9), Error);
   cloud[3].x() = std::nan("");
-  EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9), Error);
+  EXPECT_THROW(sample_grasps(*model, cloud, config, 5, config.sampling, 9), Error);
 }
 
 TEST(Sampling, AveragingTheZOfSeveralClouds) {
   torch::manual_seed(1);
   TrainConfig config = tiny_config();
-  const nn::GraspFlowModel model(config.model);
+  const Generator model = make_generator(config);
   const std::vector<Eigen::Vector3d> cloud = normal_cloud(1.0);
   // Two copies of a cloud average to its own z: the grasps of the single cloud.
   std::vector<Eigen::Vector3d> twice = cloud;
   twice.insert(twice.end(), cloud.begin(), cloud.end());
   SamplingSettings two = config.sampling;
   two.clouds = 2;
-  const auto once = sample_grasps(model, cloud, config, 6, config.sampling, 9);
-  const auto doubled = sample_grasps(model, twice, config, 6, two, 9);
+  const auto once = sample_grasps(*model, cloud, config, 6, config.sampling, 9);
+  const auto doubled = sample_grasps(*model, twice, config, 6, two, 9);
   for (std::size_t i = 0; i < once.size(); ++i) {
     EXPECT_LT((doubled[i].p - once[i].p).norm(), 1e-5) << i;
     EXPECT_LT((doubled[i].R - once[i].R).norm(), 1e-5) << i;
@@ -214,15 +177,15 @@ TEST(Sampling, AveragingTheZOfSeveralClouds) {
   // Two different halves: the grasps follow the cloud when it moves (each half is centred).
   std::vector<Eigen::Vector3d> shifted = cloud;
   for (Eigen::Vector3d& q : shifted) q += Eigen::Vector3d(0.3, -0.2, 1.0);
-  const auto halves = sample_grasps(model, cloud, config, 6, two, 9);
-  const auto moved = sample_grasps(model, shifted, config, 6, two, 9);
+  const auto halves = sample_grasps(*model, cloud, config, 6, two, 9);
+  const auto moved = sample_grasps(*model, shifted, config, 6, two, 9);
   for (std::size_t i = 0; i < halves.size(); ++i) {
     EXPECT_LT((moved[i].p - halves[i].p - Eigen::Vector3d(0.3, -0.2, 1.0)).norm(), 1e-5) << i;
     EXPECT_LT((moved[i].R - halves[i].R).norm(), 1e-5) << i;
     EXPECT_GT((halves[i].p - once[i].p).norm(), 1e-4) << i;  // the halves' z differs from z
   }
   two.clouds = 41;  // more clouds than points
-  EXPECT_THROW(sample_grasps(model, cloud, config, 6, two, 9), Error);
+  EXPECT_THROW(sample_grasps(*model, cloud, config, 6, two, 9), Error);
 }
 
 TEST(Device, NamesParseAndCudaNeedsAGpu) {
@@ -243,11 +206,11 @@ TEST(Sampling, GpuGraspsMatchTheCpusForOneSeed) {
   if (!torch::cuda::is_available()) GTEST_SKIP() << "no CUDA GPU visible to LibTorch";
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();
-  nn::GraspFlowModel model(config.model);
+  const Generator model = make_generator(config);
   const std::vector<Eigen::Vector3d> cloud = normal_cloud(1.0);
-  const auto cpu = sample_grasps(model, cloud, config, 20, config.sampling, 9);
+  const auto cpu = sample_grasps(*model, cloud, config, 20, config.sampling, 9);
   model->to(torch::kCUDA);
-  const auto gpu = sample_grasps(model, cloud, config, 20, config.sampling, 9);
+  const auto gpu = sample_grasps(*model, cloud, config, 20, config.sampling, 9);
   for (std::size_t i = 0; i < cpu.size(); ++i) {
     EXPECT_LT((gpu[i].p - cpu[i].p).norm(), 1e-4) << i;
     EXPECT_LT((gpu[i].R - cpu[i].R).norm(), 1e-4) << i;
@@ -270,11 +233,11 @@ TEST(Training, OnAGpuTheRunLoadsOnTheCpu) {
 TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
   torch::manual_seed(1);
   const TrainConfig config = tiny_config();
-  const nn::GraspFlowModel model(config.model);
+  const Generator model = make_generator(config);
   const std::vector<Eigen::Vector3d> cloud = normal_cloud(0.05);
   const gripper::CloudGraspFilter checker(cloud, gripper::GraspChecks{true, false});
-  const auto all = sample_grasps(model, cloud, config, 40, config.sampling, 9);
-  const auto clear = sample_grasps(model, cloud, config, 40, config.sampling, 9, &checker);
+  const auto all = sample_grasps(*model, cloud, config, 40, config.sampling, 9);
+  const auto clear = sample_grasps(*model, cloud, config, 40, config.sampling, 9, &checker);
   ASSERT_EQ(clear.size(), 40U);
   std::size_t kept = 0;
   for (const lie::Pose& g : all) {
@@ -294,31 +257,7 @@ TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
     }
   }
   const gripper::CloudGraspFilter everywhere(filled, gripper::GraspChecks{true, false});
-  EXPECT_THROW(sample_grasps(model, cloud, config, 5, config.sampling, 9, &everywhere), Error);
-}
-
-// A model's parameters, flattened into one tensor.
-at::Tensor flat_parameters(const nn::GraspFlowModel& model) {
-  std::vector<at::Tensor> flat;
-  for (const at::Tensor& p : model->parameters()) flat.push_back(p.flatten());
-  return torch::cat(flat);
-}
-
-// The model parameters a run loads for sampling and evaluation.
-at::Tensor run_parameters(const fs::path& run) {
-  return flat_parameters(load_trained_model(run).model);
-}
-
-// The losses of a run's log, line by line (timings differ between runs).
-std::vector<double> logged_losses(const fs::path& run) {
-  std::vector<double> out;
-  std::istringstream lines(read_file(run / "log.jsonl"));
-  std::string line;
-  while (std::getline(lines, line)) {
-    const auto record = nlohmann::json::parse(line);
-    if (record.contains("loss")) out.push_back(record["loss"]);
-  }
-  return out;
+  EXPECT_THROW(sample_grasps(*model, cloud, config, 5, config.sampling, 9, &everywhere), Error);
 }
 
 TEST(Trainer, InterruptedRunResumesBitForBit) {
@@ -350,7 +289,7 @@ TEST(Trainer, WeightAverageIsWhatARunLoads) {
   TrainConfig config = tiny_config();
   config.ema_decay = 0.9;
   train(config, data, dir / "run", 1);
-  nn::GraspFlowModel last(config.model);
+  const Generator last = make_generator(config);
   load_checkpoint(dir / "run/checkpoint.pt", *last);  // the trained weights themselves
   const at::Tensor average = run_parameters(dir / "run");
   EXPECT_TRUE(torch::isfinite(average).all().item<bool>());
@@ -469,7 +408,7 @@ TEST(Trainer, FineTuningStartsFromTheInitModelsWeights) {
 
 // Flips the sign bit of every parameter's first float in the file at path (tensors are stored
 // uncompressed, so their bytes appear verbatim).
-void flip_first_sign_bits(const fs::path& path, const nn::GraspFlowModel& model) {
+void flip_first_sign_bits(const fs::path& path, const Generator& model) {
   std::string bytes = read_file(path);
   for (const at::Tensor& p : model->parameters()) {
     const at::Tensor values = p.detach().flatten().contiguous();
@@ -488,7 +427,7 @@ TEST(Checkpoint, DamageIsFoundByTheZipCrcsAndTheContentHash) {
   train(config, tiny_dataset(dir), dir / "run", 1);
   const TrainedModel trained = load_trained_model(dir / "run");
   save_weights(dir / "weights.pt", *trained.model, 6);
-  nn::GraspFlowModel model(config.model);
+  const Generator model = make_generator(config);
   EXPECT_EQ(load_weights(dir / "weights.pt", *model), 6);
   EXPECT_TRUE(torch::equal(flat_parameters(model), flat_parameters(trained.model)));
   // One sign bit flipped in each weight tensor: the ZIP container's CRC-32 refuses it before
@@ -528,9 +467,9 @@ TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
   const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
   const data::GraspObject box = data::AcronymDataset::load(dataset.objects()[0]);
   const TrainConfig config = tiny_config();
-  const nn::GraspFlowModel model(config.model);
+  const Generator model = make_generator(config);
   const ObjectEvaluation e =
-      evaluate_object(model, box, config, test_rotations(), 10, config.sampling, 3);
+      evaluate_object(*model, box, config, test_rotations(), 10, config.sampling, 3);
   ASSERT_EQ(e.generated.size(), 3u);
   // A common rotation leaves the EMD unchanged, so the grasps rotated back into the object's
   // frame have each rotation's EMD against the unrotated reference.
@@ -554,25 +493,25 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   // The 6 cm box's nearest shape among the 4 and 5 cm boxes is the 5 cm one.
   const std::vector<data::GraspObject> smaller = {boxes[0], boxes[1]};
   const BaselineEvaluation b = evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 50, 7);
-  EXPECT_EQ(b.nearest, boxes[1].name);
+  EXPECT_EQ(b.scores.nearest, boxes[1].name);
   EXPECT_EQ(b.n, 50u);
-  EXPECT_EQ(b.nearest_n, 50u);
+  EXPECT_EQ(b.scores.nearest_n, 50u);
   // The kept nearest grasps are the ones compared.
   ASSERT_EQ(b.nearest_grasps.size(), 50u);
   EXPECT_DOUBLE_EQ(
       metrics::earth_movers_distance(b.nearest_grasps, reference_grasps(boxes[2], 50, 7)),
-      b.nearest_emd);
-  EXPECT_GT(b.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
+      b.scores.nearest_emd);
+  EXPECT_GT(b.scores.random_emd, 0.5);  // random rotations: the geodesic EMD is dominated by angles
   // 120 successful grasps hold two disjoint draws of 50 (a floor) but not of 61.
-  ASSERT_TRUE(b.floor_emd.has_value());
-  EXPECT_GT(*b.floor_emd, 0.0);
-  EXPECT_FALSE(evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 61, 7).floor_emd);
+  ASSERT_TRUE(b.scores.floor_emd.has_value());
+  EXPECT_GT(*b.scores.floor_emd, 0.0);
+  EXPECT_FALSE(evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 61, 7).scores.floor_emd);
   // A training object is compared with the nearest other one (leave-one-out), not with itself.
   const std::vector<data::GraspObject> with_itself = {boxes[1], boxes[0]};
   const BaselineEvaluation own =
       evaluate_baselines(boxes[0], TrainingShapes(with_itself, 7), 50, 7);
-  EXPECT_EQ(own.nearest, boxes[1].name);
-  EXPECT_GT(own.nearest_emd, 0.0);
+  EXPECT_EQ(own.scores.nearest, boxes[1].name);
+  EXPECT_GT(own.scores.nearest_emd, 0.0);
   const std::vector<data::GraspObject> only_itself = {boxes[0]};
   EXPECT_THROW(evaluate_baselines(boxes[0], TrainingShapes(only_itself, 7), 50, 7), Error);
   EXPECT_THROW(TrainingShapes({}, 7), Error);

@@ -57,4 +57,8 @@ inline void require(bool condition, const std::string& message) {
   if (!condition) throw Error(message);
 }
 
+// Throws unless points is a float32 [B, N, 3] batch of clouds with B ≥ 1, N ≥ k and every
+// coordinate finite; `what` names the encoder in the message.
+void require_clouds(const at::Tensor& points, const std::string& what, int64_t k);
+
 }  // namespace graspecmf::nn::detail

@@ -45,15 +45,9 @@ EncoderImpl::EncoderImpl(EncoderOptions options) : options_(std::move(options)) 
 }
 
 torch::Tensor EncoderImpl::forward(const torch::Tensor& points) const {
-  detail::require_shape(points, "Encoder: points", {-1, -1, 3});
+  detail::require_clouds(points, "Encoder", options_.k);
   const int64_t batch = points.size(0);
   const int64_t n = points.size(1);
-  detail::require(batch >= 1, "Encoder: empty batch (no point cloud)");
-  detail::require(n >= 1, "Encoder: empty point cloud");
-  detail::require(n >= options_.k, "Encoder: the cloud has " + std::to_string(n) +
-                                       " points, fewer than k = " + std::to_string(options_.k));
-  detail::require(torch::isfinite(points).all().item<bool>(),
-                  "Encoder: the point cloud contains NaN or infinity");
 
   // Features stay channels last, [B, N, 3, C], so every map is one GEMM over B·N·3 rows.
   auto v = points.unsqueeze(-1);

@@ -14,22 +14,23 @@
 #include "graspecmf/core/output_lock.hpp"
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/data/training_sampler.hpp"
-#include "graspecmf/flow/loss.hpp"
-#include "graspecmf/flow/path.hpp"
-#include "graspecmf/flow/prior.hpp"
-#include "graspecmf/train/checkpoint.hpp"
-#include "graspecmf/train/evaluation.hpp"
+#include "graspecmf/eval/evaluation.hpp"
+#include "graspecmf/flow/pose_batch.hpp"
+#include "graspecmf/models/checkpoint.hpp"
+#include "graspecmf/models/generator.hpp"
+#include "graspecmf/models/model_folder.hpp"
 
 namespace graspecmf::train {
 namespace fs = std::filesystem;
+using models::kCheckpointFile;
+using models::kConfigFile;
+using models::kInitFile;
+using models::kLogFile;
+using models::TrainConfig;
+using models::TrainedModel;
 using nlohmann::json;
 namespace {
 
-constexpr const char* kConfigFile = "config.json";
-constexpr const char* kCheckpointFile = "checkpoint.pt";
-constexpr const char* kWeightsFile = "model.pt";
-constexpr const char* kLogFile = "log.jsonl";
-constexpr const char* kInitFile = "init.json";  // the model a fine-tuning run started from
 constexpr std::uint64_t kValidationSeed = 12345;
 
 // Sets every parameter group's Adam learning rate.
@@ -65,13 +66,9 @@ std::vector<data::GraspObject> load_objects(const data::AcronymDataset& dataset,
   return objects;
 }
 
-// One step's tensors: the clouds [O, N, 3] and the grasps with their object indices.
-struct StepTensors {
-  at::Tensor points, object_index;
-  flow::PoseBatch grasps;
-};
-
-StepTensors to_tensors(const std::vector<data::ObjectSample>& samples, c10::Device device) {
+// One step's samples as tensors on device.
+models::TrainingBatch to_tensors(const std::vector<data::ObjectSample>& samples,
+                                 c10::Device device) {
   const auto copy = [](const std::vector<float>& values, std::vector<int64_t> shape) {
     return torch::from_blob(const_cast<float*>(values.data()), shape, torch::kFloat).clone();
   };
@@ -90,27 +87,10 @@ StepTensors to_tensors(const std::vector<data::ObjectSample>& samples, c10::Devi
           {torch::cat(rotations).to(device), torch::cat(positions).to(device)}};
 }
 
-// The flow-matching loss of one batch (docs/method.md, "Flow matching on SO(3) × R³"),
-// differentiable in the model's parameters. The noise comes from the CPU generator, so a seed draws
-// the same noise on every device.
-at::Tensor batch_loss(const nn::GraspFlowModel& model, const StepTensors& batch,
-                      const TrainConfig& config, at::Generator& generator) {
-  const int64_t g = batch.grasps.R.size(0);
-  const c10::Device device = batch.points.device();
-  const nn::ObjectCondition condition = model->condition(batch.points);
-  const flow::PoseBatch x0 = flow::sample_prior(g, config.prior_position_std, generator);
-  const at::Tensor t = at::rand({g}, generator, torch::kFloat).to(device);
-  const flow::PathPoint path =
-      flow::geodesic_path({x0.R.to(device), x0.p.to(device)}, batch.grasps, t);
-  const at::Tensor keep = flow::cfg_keep_mask(g, config.cfg_drop, generator).to(device);
-  const nn::Velocity velocity =
-      model->forward(condition, batch.object_index, path.x_t.R, path.x_t.p, t, keep);
-  return flow::flow_matching_loss(velocity.omega, velocity.v, path.omega, path.v);
-}
-
 // Validation: the loss on a fixed batch of the validation objects and their mean EMD.
-json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspObject>& objects,
-                       const TrainConfig& config, std::int64_t step) {
+json validation_record(const models::Generator& model,
+                       const std::vector<data::GraspObject>& objects, const TrainConfig& config,
+                       std::int64_t step) {
   json record = {{"step", step}};
   if (objects.empty()) return record;
   model->eval();
@@ -120,13 +100,13 @@ json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspOb
     options.objects_per_step = objects.size();
     data::TrainingSampler sampler(objects, options, kValidationSeed);
     at::Generator generator = flow::make_generator(kValidationSeed);
-    const StepTensors batch = to_tensors(sampler.next_step(), model->device());
-    record["val_loss"] = batch_loss(model, batch, config, generator).item<double>();
+    const models::TrainingBatch batch = to_tensors(sampler.next_step(), model->device());
+    record["val_loss"] = model->loss(batch, generator).item<double>();
   }
   double total = 0;
   for (const data::GraspObject& object : objects) {
-    total += evaluate_object(model, object, config, {test_rotations()[0]}, config.validation_grasps,
-                             config.sampling, kValidationSeed)
+    total += eval::evaluate_object(*model, object, config, {eval::test_rotations()[0]},
+                                   config.validation_grasps, config.sampling, kValidationSeed)
                  .mean_emd;
   }
   record["val_emd"] = total / static_cast<double>(objects.size());
@@ -135,11 +115,10 @@ json validation_record(nn::GraspFlowModel model, const std::vector<data::GraspOb
 }
 
 // average ← keep·average + (1 − keep)·model, parameter by parameter (keep = 0 copies).
-void blend_weights(const nn::GraspFlowModel& average, const nn::GraspFlowModel& model,
-                   double keep) {
+void blend_weights(const torch::nn::Module& average, const torch::nn::Module& model, double keep) {
   torch::NoGradGuard no_grad;
-  const auto target = average->parameters();
-  const auto source = model->parameters();
+  const auto target = average.parameters();
+  const auto source = model.parameters();
   for (std::size_t i = 0; i < target.size(); ++i) target[i].mul_(keep).add_(source[i], 1 - keep);
 }
 
@@ -170,13 +149,13 @@ void truncate_log(const fs::path& path, std::int64_t step) {
   remove_temporary_files(run_dir);
   const fs::path file = run_dir / kConfigFile;
   if (fs::exists(file)) {
-    if (to_json(read_train_config(file)) != to_json(config)) {
+    if (models::to_json(models::read_train_config(file)) != models::to_json(config)) {
       throw Error(run_dir.string() +
                   " holds a run with another configuration; choose another --out or remove it");
     }
     return lock;
   }
-  write_file_atomically(file, to_json(config).dump(2) + "\n");
+  write_file_atomically(file, models::to_json(config).dump(2) + "\n");
   return lock;
 }
 
@@ -209,8 +188,8 @@ std::string checked_init(const fs::path& run_dir, const fs::path& init, bool res
 
 // The init model on `device`, after checking that its network settings are the config's.
 TrainedModel load_init_model(const fs::path& init, const TrainConfig& config, c10::Device device) {
-  TrainedModel source = load_trained_model(init, device);
-  if (to_json(source.config)["model"] != to_json(config)["model"]) {
+  TrainedModel source = models::load_trained_model(init, device);
+  if (models::to_json(source.config)["model"] != models::to_json(config)["model"]) {
     throw Error(init.string() +
                 ": its network settings (\"model\") differ from the config's; --init needs the "
                 "same network");
@@ -221,9 +200,9 @@ TrainedModel load_init_model(const fs::path& init, const TrainConfig& config, c1
 // Copies the init model's weights into model (and the weight average) and records the init
 // (init_text, its absolute path) in the run folder.
 void start_from(const TrainedModel& source, const std::string& init_text, const fs::path& run_dir,
-                const nn::GraspFlowModel& model, const nn::GraspFlowModel& average) {
-  blend_weights(model, source.model, 0.0);
-  if (average) blend_weights(average, model, 0.0);
+                const models::Generator& model, const models::Generator& average) {
+  blend_weights(*model, *source.model, 0.0);
+  if (average) blend_weights(*average, *model, 0.0);
   write_file_atomically(run_dir / kInitFile,
                         json{{"model", init_text}, {"step", source.step}}.dump(2) + "\n");
 }
@@ -233,7 +212,7 @@ void start_from(const TrainedModel& source, const std::string& init_text, const 
 TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs::path& run_dir,
                   int threads, const TrainCallbacks& callbacks, c10::Device device,
                   const fs::path& init) {
-  validate(config);
+  models::validate(config);
   if (threads < 1) throw Error("train: threads must be ≥ 1");
   at::set_num_threads(threads);
   // A bad init model is refused before the dataset loads and the run folder is made.
@@ -246,13 +225,13 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   }
   const data::DatasetSplit split = dataset_split(dataset, data_dir, config.seed);
   torch::manual_seed(config.seed);
-  nn::GraspFlowModel model(config.model);
+  const models::Generator model = models::make_generator(config);
   model->to(device);
-  nn::GraspFlowModel average{nullptr};  // the weight average, when ema_decay > 0
+  models::Generator average;  // the weight average, when ema_decay > 0
   if (config.ema_decay > 0) {
-    average = nn::GraspFlowModel(config.model);
+    average = models::make_generator(config);
     average->to(device);
-    blend_weights(average, model, 0.0);
+    blend_weights(*average, *model, 0.0);
   }
   torch::optim::Adam optimizer(
       model->parameters(),
@@ -270,8 +249,9 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   const bool resuming = fs::exists(checkpoint);
   const std::string init_text = checked_init(run_dir, init, resuming);
   if (resuming) {
-    TrainingState state;
-    load_checkpoint(checkpoint, *model, &optimizer, &state, average ? average.get() : nullptr);
+    models::TrainingState state;
+    models::load_checkpoint(checkpoint, *model, &optimizer, &state,
+                            average ? average.get() : nullptr);
     sampler.restore(state.sampler_state);
     generator.set_state(state.generator);
     result.resumed_from = state.step;
@@ -280,8 +260,9 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   }
   truncate_log(run_dir / kLogFile, result.resumed_from);
   const auto save = [&](std::int64_t step) {
-    save_checkpoint(checkpoint, *model, optimizer, {step, sampler.state(), generator.get_state()},
-                    average ? average.get() : nullptr);
+    models::save_checkpoint(checkpoint, *model, optimizer,
+                            {step, sampler.state(), generator.get_state()},
+                            average ? average.get() : nullptr);
   };
 
   model->train();
@@ -290,15 +271,14 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   double interval_loss = 0;
   std::int64_t interval_steps = 0;
   for (std::int64_t step = result.resumed_from + 1; step <= config.steps; ++step) {
-    const at::Tensor loss =
-        batch_loss(model, to_tensors(sampler.next_step(), device), config, generator);
+    const at::Tensor loss = model->loss(to_tensors(sampler.next_step(), device), generator);
     optimizer.zero_grad();
     loss.backward();
-    set_learning_rate(optimizer, learning_rate_at(config, step));
+    set_learning_rate(optimizer, models::learning_rate_at(config, step));
     optimizer.step();
     if (average) {
       const auto s = static_cast<double>(step);
-      blend_weights(average, model, std::min(config.ema_decay, (1 + s) / (10 + s)));
+      blend_weights(*average, *model, std::min(config.ema_decay, (1 + s) / (10 + s)));
     }
     interval_loss += loss.item<double>();
     ++interval_steps;
@@ -307,7 +287,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
       const json record = {
           {"step", step},
           {"loss", interval_loss / static_cast<double>(interval_steps)},
-          {"learning_rate", learning_rate_at(config, step)},
+          {"learning_rate", models::learning_rate_at(config, step)},
           {"seconds_per_step",
            std::chrono::duration<double>(now - interval_start).count() / interval_steps},
           {"threads", threads},
@@ -329,44 +309,6 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   result.steps = config.steps;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
-}
-
-TrainedModel load_trained_model(const fs::path& run_dir, c10::Device device) {
-  const fs::path config_file = run_dir / kConfigFile;
-  if (!fs::exists(config_file)) {
-    throw Error(run_dir.string() + ": not a model or training run (no config.json)");
-  }
-  TrainedModel trained;
-  trained.config = read_train_config(config_file);
-  trained.model = nn::GraspFlowModel(trained.config.model);
-  nn::GraspFlowModelImpl& module = *trained.model;
-  if (fs::exists(run_dir / kWeightsFile)) {
-    trained.step = load_weights(run_dir / kWeightsFile, module);
-  } else {
-    TrainingState state;
-    // With a weight average, the average overwrites the trained weights just loaded.
-    load_checkpoint(run_dir / kCheckpointFile, module, nullptr, &state,
-                    trained.config.ema_decay > 0 ? &module : nullptr);
-    trained.step = state.step;
-  }
-  trained.model->to(device);
-  trained.model->eval();
-  return trained;
-}
-
-std::int64_t export_model(const fs::path& run_dir, const fs::path& out_dir) {
-  const TrainedModel trained = load_trained_model(run_dir);
-  std::error_code ec;
-  fs::create_directories(out_dir, ec);
-  if (ec) throw Error(out_dir.string() + ": cannot create the folder (" + ec.message() + ")");
-  write_file_atomically(out_dir / kConfigFile, to_json(trained.config).dump(2) + "\n");
-  save_weights(out_dir / kWeightsFile, *trained.model, trained.step);
-  return trained.step;
-}
-
-std::vector<fs::path> model_folder_files(const fs::path& dir) {
-  return {dir / kConfigFile, dir / kCheckpointFile, dir / kWeightsFile, dir / kLogFile,
-          dir / kInitFile};
 }
 
 }  // namespace graspecmf::train

@@ -1,7 +1,7 @@
 #pragma once
 // `graspecmf train`: flow-matching training of the GraspECMF model on an ACRONYM-style dataset
-// folder, in a run folder that holds config.json, checkpoint.pt and log.jsonl; and loading or
-// exporting a trained model.
+// folder, in a run folder that holds config.json, checkpoint.pt and log.jsonl
+// (models/model_folder.hpp loads and exports the result).
 // Interrupted runs (even kill -9) resume from the last checkpoint and continue bit for bit.
 
 #include <c10/core/Device.h>
@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "graspecmf/train/train_config.hpp"
+#include "graspecmf/models/train_config.hpp"
 
 namespace graspecmf::train {
 
@@ -38,32 +38,9 @@ struct TrainResult {
 // recorded in the run's init.json, and a resume may only name the same one). Throws Error for a
 // missing or unusable dataset or init model, a run folder made with another configuration or
 // init, or an unwritable run folder.
-TrainResult train(const TrainConfig& config, const std::filesystem::path& data_dir,
+TrainResult train(const models::TrainConfig& config, const std::filesystem::path& data_dir,
                   const std::filesystem::path& run_dir, int threads,
                   const TrainCallbacks& callbacks = {}, c10::Device device = c10::Device(c10::kCPU),
                   const std::filesystem::path& init = {});
-
-struct TrainedModel {
-  TrainConfig config;
-  nn::GraspFlowModel model{nullptr};  // in eval mode
-  std::int64_t step = 0;
-};
-
-// A model folder's configuration and weights, the model moved to `device`: a released model
-// (config.json and model.pt, written by export_model) or a training run (config.json and the
-// latest checkpoint, its weight average when ema_decay > 0). Throws Error if either file is
-// missing, or the weights do not fit the configuration.
-TrainedModel load_trained_model(const std::filesystem::path& run_dir,
-                                c10::Device device = c10::Device(c10::kCPU));
-
-// Writes the run's inference model into out_dir (created if needed): config.json and model.pt
-// (the weight average when the run keeps one, float32, no optimiser state). Returns its step.
-// Throws Error if the run cannot be loaded or out_dir cannot be written.
-std::int64_t export_model(const std::filesystem::path& run_dir,
-                          const std::filesystem::path& out_dir);
-
-// The files a run or model folder may hold (config, checkpoint, weights, log, init record): the
-// paths an output must never take.
-std::vector<std::filesystem::path> model_folder_files(const std::filesystem::path& dir);
 
 }  // namespace graspecmf::train

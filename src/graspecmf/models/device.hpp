@@ -6,10 +6,10 @@
 
 #include <string>
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 
 // "cpu", "cuda" or "cuda:N" as a device. Throws Error for another name, or for a CUDA device
 // when LibTorch sees no CUDA GPU (Debian's LibTorch is CPU-only) or has fewer than N + 1.
 c10::Device parse_device(const std::string& name);
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

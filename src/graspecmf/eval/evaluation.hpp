@@ -8,10 +8,12 @@
 #include <vector>
 
 #include "graspecmf/data/dataset.hpp"
+#include "graspecmf/eval/report.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
-#include "graspecmf/train/train_config.hpp"
+#include "graspecmf/models/generator.hpp"
+#include "graspecmf/models/train_config.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::eval {
 
 struct ObjectEvaluation {
   std::string name;
@@ -44,22 +46,16 @@ ObjectFilter object_filter(const data::GraspObject& object, const gripper::Grasp
 // sampled from the model for the rotated cloud (with checks, only ones that the filter, rotated by
 // g, keeps), and their EMD to the rotated reference; the generated grasps are kept, in the
 // object's frame.
-ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
-                                 const TrainConfig& config,
+ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
+                                 const data::GraspObject& object, const models::TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
-                                 const SamplingSettings& settings, std::uint64_t seed,
+                                 const models::SamplingSettings& settings, std::uint64_t seed,
                                  const ObjectFilter& filter = {});
 
 struct BaselineEvaluation {
-  std::size_t n = 0;          // grasps compared
-  double random_emd = 0.0;    // uniformly random grasps around the object
-  std::string nearest;        // the training object closest in shape
-  double nearest_emd = 0.0;   // its successful grasps, moved to this object's centroid
-  std::size_t nearest_n = 0;  // grasps in that comparison: n, or fewer if it has fewer than n
-  std::vector<lie::Pose> nearest_grasps;  // those nearest_n grasps, moved onto this object
-  // The sampling floor: the reference against the next n of the same shuffle (the object's own
-  // grasps), when the object has at least 2n successful grasps.
-  std::optional<double> floor_emd;
+  std::size_t n = 0;      // grasps compared
+  BaselineScores scores;  // random grasps, the nearest training object, the sampling floor
+  std::vector<lie::Pose> nearest_grasps;  // the nearest object's grasps, moved onto this object
 };
 
 // The training objects with their seeded surface clouds centred on their centroids, computed once
@@ -91,4 +87,4 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
                                       std::uint64_t seed, const ObjectFilter& filter = {});
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::eval

@@ -1,10 +1,10 @@
-#include "graspecmf/train/device.hpp"
+#include "graspecmf/models/device.hpp"
 
 #include <torch/cuda.h>
 
 #include "graspecmf/core/error.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 
 c10::Device parse_device(const std::string& name) {
   const Error unknown("unknown device '" + name + "' (expected cpu, cuda or cuda:N)");
@@ -28,4 +28,4 @@ c10::Device parse_device(const std::string& name) {
   }
 }
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

@@ -1,4 +1,4 @@
-#include "graspecmf/train/checkpoint.hpp"
+#include "graspecmf/models/checkpoint.hpp"
 
 #include <torch/serialize.h>
 
@@ -11,7 +11,7 @@
 #include "graspecmf/core/input_file.hpp"
 #include "graspecmf/core/zip_check.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 namespace fs = std::filesystem;
 namespace {
 
@@ -207,4 +207,4 @@ std::int64_t load_weights(const fs::path& path, torch::nn::Module& model) {
   }
 }
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

@@ -1,7 +1,7 @@
 #pragma once
-// Drawing grasps from a trained model (docs/method.md, "Sampling: integrating the flow"): centre
-// and scale the cloud, integrate the guided flow from prior samples, and map the grasps back to the
-// cloud's frame in metres.
+// Drawing grasps from a trained generator (docs/method.md, "Sampling: integrating the flow"):
+// centre and scale the cloud, draw grasps in network units, and map them back to the cloud's frame
+// in metres, optionally keeping only those a grasp filter passes.
 
 #include <cstdint>
 #include <vector>
@@ -9,15 +9,10 @@
 #include "graspecmf/flow/pose_batch.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/lie/se3.hpp"
-#include "graspecmf/nn/grasp_flow_model.hpp"
-#include "graspecmf/train/train_config.hpp"
+#include "graspecmf/models/generator.hpp"
+#include "graspecmf/models/train_config.hpp"
 
-namespace graspecmf::train {
-
-// The flow from x0 (network units, float32) for one object given as points [N, 3] in network units
-// (centred and scaled): x(1) with the settings' solver, steps and guidance. No gradients.
-flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tensor& points,
-                                 const flow::PoseBatch& x0, const SamplingSettings& settings);
+namespace graspecmf::models {
 
 // n grasps for a cloud in metres (any frame, ≥ k points per cloud): split into settings.clouds
 // consecutive equal parts (a remainder is dropped), each centred on its centroid and scaled by
@@ -31,14 +26,10 @@ flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tens
 // thrown if fewer than n are kept after kMaxSamplingRounds. Throws Error for an empty or non-finite
 // cloud or n = 0.
 inline constexpr int kMaxSamplingRounds = 8;
-// The most grasps integrated in one batch on the CPU and on a GPU; larger requests are integrated
-// in chunks of this size (docs/model.md, "Speed").
-inline constexpr std::int64_t kCpuIntegrationChunk = 256;
-inline constexpr std::int64_t kGpuIntegrationChunk = 16384;
-std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
+std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
                                      const SamplingSettings& settings, std::uint64_t seed,
                                      const gripper::CloudGraspFilter* filter = nullptr);
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

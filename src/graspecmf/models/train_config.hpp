@@ -2,6 +2,7 @@
 // Every setting of a training run (docs/config.md lists every key), read from and written to JSON;
 // the run folder keeps a copy, and a resumed run must use the same one.
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
@@ -10,7 +11,7 @@
 #include "graspecmf/data/training_sampler.hpp"
 #include "graspecmf/nn/grasp_flow_model.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 
 // How grasps are drawn from a trained model (also the validation EMD's settings).
 struct SamplingSettings {
@@ -20,8 +21,18 @@ struct SamplingSettings {
   int clouds = 1;         // clouds of the object encoded and their z averaged (1 in the paper)
 };
 
+// The generators make_generator builds (docs/config.md, `model.type`).
+inline const std::array<std::string, 2> kModelTypes = {"graspecmf", "flow_dgcnn"};
+
+// Which generator to build and its network settings (docs/config.md, `model`).
+struct ModelConfig {
+  std::string type = "graspecmf";  // the generator (make_generator)
+  nn::EncoderOptions encoder;      // its points also set the cloud size of every model
+  nn::VectorFieldOptions field;    // field.z_channels follows encoder.out_channels
+};
+
 struct TrainConfig {
-  nn::GraspFlowModelOptions model;    // field.z_channels follows encoder.out_channels
+  ModelConfig model;
   data::TrainingSamplerOptions data;  // points follows model.encoder.points
   std::int64_t steps = 100000;
   double learning_rate = 1e-4;  // Adam
@@ -55,4 +66,4 @@ TrainConfig train_config_from_json(const nlohmann::json& json);
 // Reads a JSON config file; throws Error naming the file.
 TrainConfig read_train_config(const std::filesystem::path& path);
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

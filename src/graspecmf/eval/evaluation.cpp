@@ -1,4 +1,4 @@
-#include "graspecmf/train/evaluation.hpp"
+#include "graspecmf/eval/evaluation.hpp"
 
 #include <limits>
 #include <numeric>
@@ -12,9 +12,9 @@
 #include "graspecmf/lie/rotation_sets.hpp"
 #include "graspecmf/metrics/baselines.hpp"
 #include "graspecmf/metrics/emd.hpp"
-#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/models/grasp_sampling.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::eval {
 namespace {
 
 // The points rotated by g.
@@ -52,10 +52,10 @@ ObjectFilter object_filter(const data::GraspObject& object, const gripper::Grasp
           checks.any() ? gripper::filter_cloud(object.mesh, seed) : std::vector<Eigen::Vector3d>{}};
 }
 
-ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::GraspObject& object,
-                                 const TrainConfig& config,
+ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
+                                 const data::GraspObject& object, const models::TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
-                                 const SamplingSettings& settings, std::uint64_t seed,
+                                 const models::SamplingSettings& settings, std::uint64_t seed,
                                  const ObjectFilter& filter) {
   ObjectEvaluation result;
   result.name = object.name;
@@ -74,8 +74,8 @@ ObjectEvaluation evaluate_object(const nn::GraspFlowModel& model, const data::Gr
     std::optional<gripper::CloudGraspFilter> rotated_filter;
     if (filter.checks.any()) rotated_filter.emplace(rotated(filter.points, g), filter.checks);
     const std::vector<lie::Pose> generated =
-        sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
-                      rotated_filter ? &*rotated_filter : nullptr);
+        models::sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
+                              rotated_filter ? &*rotated_filter : nullptr);
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
     std::vector<lie::Pose>& kept = result.generated.emplace_back();
     for (const lie::Pose& x : generated) kept.push_back({g.transpose() * x.R, g.transpose() * x.p});
@@ -141,15 +141,15 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   const std::vector<lie::Pose> reference = slice(0, std::min(n, shuffled.size()));
   result.n = reference.size();
   if (shuffled.size() >= 2 * result.n) {
-    result.floor_emd = metrics::earth_movers_distance(slice(result.n, result.n), reference);
+    result.scores.floor_emd = metrics::earth_movers_distance(slice(result.n, result.n), reference);
   }
-  result.random_emd = metrics::earth_movers_distance(
+  result.scores.random_emd = metrics::earth_movers_distance(
       metrics::random_grasps_in_box(geometry::bounding_box(object.mesh),
                                     gripper::panda::kPadCenterZ, result.n, seed + 1),
       reference);
   Eigen::Vector3d centroid, neighbour_centroid;
   const data::GraspObject& nearest = training.nearest(object, centroid, neighbour_centroid);
-  result.nearest = nearest.name;
+  result.scores.nearest = nearest.name;
   std::vector<lie::Pose> moved;
   std::optional<gripper::CloudGraspFilter> grasp_filter;
   if (filter.checks.any()) grasp_filter.emplace(filter.points, filter.checks);
@@ -165,12 +165,12 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
         "'s grasps passes the grasp filter on it, so the nearest-object baseline has no grasps");
   }
   const std::size_t m = moved.size();  // n, or fewer if the nearest object has fewer
-  result.nearest_n = m;
-  result.nearest_emd = metrics::earth_movers_distance(
+  result.scores.nearest_n = m;
+  result.scores.nearest_emd = metrics::earth_movers_distance(
       moved, std::vector<lie::Pose>(reference.begin(),
                                     reference.begin() + static_cast<std::ptrdiff_t>(m)));
   result.nearest_grasps = std::move(moved);
   return result;
 }
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::eval

@@ -1,4 +1,4 @@
-#include "graspecmf/train/grasp_sampling.hpp"
+#include "graspecmf/models/grasp_sampling.hpp"
 
 #include <torch/torch.h>
 
@@ -11,36 +11,9 @@
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/flow/sampler.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 
 namespace {
-
-// x(1) from x0 for an object whose z terms are `condition`, integrated a chunk of grasps at a time:
-// each grasp's path is independent of the others, and chunks keep the field's tensors in cache
-// and in reused heap memory, and memory bounded for any count.
-flow::PoseBatch integrate_condition(const nn::GraspFlowModel& model,
-                                    const nn::ObjectCondition& condition, const flow::PoseBatch& x0,
-                                    const SamplingSettings& settings) {
-  torch::NoGradGuard no_grad;
-  const flow::ConditionalField field = [&](const flow::PoseBatch& x, const at::Tensor& t,
-                                           const at::Tensor& keep) {
-    const at::Tensor object = torch::zeros({x.R.size(0)}, x.R.options().dtype(torch::kLong));
-    const nn::Velocity velocity = model->forward(condition, object, x.R, x.p, t, keep);
-    return std::make_pair(velocity.omega, velocity.v);
-  };
-  const flow::VectorField guided = flow::guided_field(field, settings.guidance);
-  const flow::Solver solver = flow::parse_solver(settings.solver);
-  const int64_t batch = x0.R.is_cuda() ? kGpuIntegrationChunk : kCpuIntegrationChunk;
-  std::vector<at::Tensor> rotations, positions;
-  for (int64_t first = 0; first < x0.R.size(0); first += batch) {
-    const int64_t count = std::min<int64_t>(batch, x0.R.size(0) - first);
-    const flow::PoseBatch chunk{x0.R.narrow(0, first, count), x0.p.narrow(0, first, count)};
-    const flow::PoseBatch x1 = flow::integrate(guided, chunk, solver, settings.steps);
-    rotations.push_back(x1.R);
-    positions.push_back(x1.p);
-  }
-  return {torch::cat(rotations), torch::cat(positions)};
-}
 
 // Grasps to draw in a later sampling round: the missing count over the kept fraction so far
 // (1/64 if none was kept), with a quarter to spare; at least 64, at most 64 n and 2^20 (so a
@@ -63,13 +36,7 @@ std::uint64_t round_seed(std::uint64_t seed, int round) {
 
 }  // namespace
 
-flow::PoseBatch integrate_grasps(const nn::GraspFlowModel& model, const at::Tensor& points,
-                                 const flow::PoseBatch& x0, const SamplingSettings& settings) {
-  torch::NoGradGuard no_grad;
-  return integrate_condition(model, model->condition(points.unsqueeze(0)), x0, settings);
-}
-
-std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
+std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
                                      const SamplingSettings& settings, std::uint64_t seed,
@@ -104,18 +71,16 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   }
   torch::NoGradGuard no_grad;
   // The prior is drawn on the CPU, so a seed gives the same grasps on every device.
-  const c10::Device device = model->device();
-  const nn::ObjectCondition condition = model->averaged_condition(points.to(device));
+  const c10::Device device = model.device();
+  const Condition condition = model.condition(points.to(device));
   std::vector<lie::Pose> grasps;
   std::size_t drawn = 0;
   for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {
     const std::size_t count =
         round == 0 ? n : next_round_size(n, n - grasps.size(), grasps.size(), drawn);
     at::Generator generator = flow::make_generator(round == 0 ? seed : round_seed(seed, round));
-    const flow::PoseBatch x0 =
-        flow::sample_prior(static_cast<int64_t>(count), config.prior_position_std, generator);
     const flow::PoseBatch x1 =
-        integrate_condition(model, condition, {x0.R.to(device), x0.p.to(device)}, settings);
+        model.draw(condition, static_cast<int64_t>(count), settings, generator);
     const at::Tensor R = x1.R.to(torch::kCPU, torch::kDouble).contiguous();
     const at::Tensor p = x1.p.to(torch::kCPU, torch::kDouble).contiguous();
     drawn += count;
@@ -136,4 +101,4 @@ std::vector<lie::Pose> sample_grasps(const nn::GraspFlowModel& model,
   return grasps;
 }
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

@@ -1,5 +1,6 @@
-#include "graspecmf/train/train_config.hpp"
+#include "graspecmf/models/train_config.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -10,7 +11,7 @@
 #include "graspecmf/core/json_file.hpp"
 #include "graspecmf/flow/sampler.hpp"
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 using nlohmann::json;
 namespace {
 
@@ -72,6 +73,14 @@ double learning_rate_at(const TrainConfig& c, std::int64_t step) {
 }
 
 void validate(const TrainConfig& c) {
+  if (std::find(kModelTypes.begin(), kModelTypes.end(), c.model.type) == kModelTypes.end()) {
+    std::string known;
+    for (const std::string& type : kModelTypes) known += (known.empty() ? "" : ", ") + type;
+    throw Error("train config: unknown model.type " + c.model.type + " (known: " + known + ")");
+  }
+  if (c.model.type != "graspecmf" && c.model.field.z_every_layer) {
+    throw Error("train config: model.field.z_every_layer is a graspecmf setting");
+  }
   const auto widths_in_range = [](const std::vector<int64_t>& widths) {
     return !widths.empty() && widths.size() <= kMaxLayers &&
            std::all_of(widths.begin(), widths.end(),
@@ -144,7 +153,8 @@ void validate(const TrainConfig& c) {
 json to_json(const TrainConfig& c) {
   const nn::EncoderOptions& e = c.model.encoder;
   return {{"model",
-           {{"encoder",
+           {{"type", c.model.type},
+            {"encoder",
              {{"widths", e.widths},
               {"k", e.k},
               {"out_channels", e.out_channels},
@@ -189,7 +199,8 @@ TrainConfig train_config_from_json(const json& j) {
        "");
   if (j.contains("model")) {
     const json& m = j["model"];
-    only(m, {"encoder", "field"}, "model.");
+    only(m, {"type", "encoder", "field"}, "model.");
+    read(m, "type", c.model.type, "model.");
     if (m.contains("encoder")) {
       const json& e = m["encoder"];
       only(e, {"widths", "k", "out_channels", "points", "slope"}, "model.encoder.");
@@ -255,4 +266,4 @@ TrainConfig read_train_config(const std::filesystem::path& path) {
   }
 }
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

@@ -10,7 +10,7 @@
 #include <filesystem>
 #include <string>
 
-namespace graspecmf::train {
+namespace graspecmf::models {
 
 struct TrainingState {
   std::int64_t step = 0;      // steps completed
@@ -39,4 +39,4 @@ void save_weights(const std::filesystem::path& path, const torch::nn::Module& mo
 // if the file is missing, damaged or made for a different configuration.
 std::int64_t load_weights(const std::filesystem::path& path, torch::nn::Module& model);
 
-}  // namespace graspecmf::train
+}  // namespace graspecmf::models

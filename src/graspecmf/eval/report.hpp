@@ -1,0 +1,69 @@
+#pragma once
+// The result of `graspecmf evaluate` as a value: per-object EMDs, reference baselines and simulated
+// success, with the summary statistics derived from them and the JSON and Markdown forms the
+// command writes (docs/evaluation.md). Torch-free.
+
+#include <cstddef>
+#include <cstdint>
+#include <nlohmann/json_fwd.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "graspecmf/gripper/cloud_grasp_filter.hpp"
+#include "graspecmf/sim/batch.hpp"
+
+namespace graspecmf::eval {
+
+// The scores of the reference baselines on one object (evaluate --baselines).
+struct BaselineScores {
+  double random_emd = 0.0;    // uniformly random grasps around the object
+  std::string nearest;        // the training object closest in shape
+  double nearest_emd = 0.0;   // its successful grasps, moved to this object's centroid
+  std::size_t nearest_n = 0;  // grasps in that comparison: n, or fewer if it has fewer than n
+  // The sampling floor: the reference against a disjoint second draw of the object's own grasps,
+  // when it has at least 2n successful grasps.
+  std::optional<double> floor_emd;
+};
+
+struct ObjectResult {
+  std::string name;
+  std::size_t n = 0;        // grasps compared per rotation
+  std::vector<double> emd;  // one per test rotation
+  double mean_emd = 0.0;
+  std::optional<BaselineScores> baselines;
+  std::optional<sim::GraspOutcomes> success;          // the model's grasps in the simulator
+  std::optional<sim::GraspOutcomes> nearest_success;  // the nearest object's grasps
+};
+
+// How the grasps were drawn.
+struct ReportSettings {
+  std::string solver;
+  int steps = 0;
+  double guidance = 0.0;
+  int clouds = 1;
+  gripper::GraspChecks checks;
+};
+
+struct EvaluationReport {
+  std::string model;  // the model folder
+  std::int64_t step = 0;
+  ReportSettings settings;
+  std::uint64_t seed = 0;  // also the seed of the paired comparisons' bootstrap
+  std::vector<ObjectResult> objects;
+};
+
+// The report as `evaluate --out` writes it: settings, per-object entries and the summary values
+// (mean EMDs, paired comparisons against the nearest object, the floor comparison, success).
+// Throws Error for a report without objects.
+nlohmann::json to_json(const EvaluationReport& report);
+// The per-object Markdown table (one row per object; baseline and success columns when present).
+std::string markdown_table(const EvaluationReport& report);
+// The one-paragraph summary printed under the table. Throws Error for a report without objects.
+std::string summary(const EvaluationReport& report);
+// The `evaluate --markdown` document: a title naming the model and settings, table and summary.
+std::string to_markdown(const EvaluationReport& report);
+// The filter in a summary: "", or e.g. ", refined, colliding and shallow grasps rejected".
+std::string filter_note(const gripper::GraspChecks& checks);
+
+}  // namespace graspecmf::eval

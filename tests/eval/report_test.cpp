@@ -1,0 +1,124 @@
+#include "graspecmf/eval/report.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "test_support.hpp"
+
+namespace graspecmf::eval {
+namespace {
+
+using graspecmf::testing::expect_error;
+
+sim::GraspOutcomes outcomes(std::size_t successes, std::size_t trials, std::size_t clear,
+                            std::size_t clear_successes) {
+  return {{successes, trials}, {clear_successes, clear}};
+}
+
+// Two objects: EMDs at three rotations, and (optionally) baselines, one with a floor, and
+// simulated success.
+EvaluationReport two_objects(bool baselines, bool success) {
+  EvaluationReport r;
+  r.model = "models/mugs";
+  r.step = 48000;
+  r.settings = {"rkmk4", 20, 2.0, 8, {}};
+  r.seed = 3;
+  r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, {}, {}, {}});
+  r.objects.push_back({"b", 40, {0.5, 0.5, 0.5}, 0.5, {}, {}, {}});
+  if (baselines) {
+    r.objects[0].baselines = BaselineScores{1.5, "t1", 0.6, 50, 0.25};
+    r.objects[1].baselines = BaselineScores{1.7, "t2", 0.4, 30, std::nullopt};
+  }
+  if (success) {
+    r.objects[0].success = outcomes(40, 50, 45, 39);
+    r.objects[1].success = outcomes(10, 40, 20, 10);
+    if (baselines) {
+      r.objects[0].nearest_success = outcomes(20, 50, 30, 18);
+      r.objects[1].nearest_success = outcomes(20, 40, 40, 20);
+    }
+  }
+  return r;
+}
+
+TEST(EvaluationReport, JsonHoldsTheObjectsAndTheirMeans) {
+  const nlohmann::json j = to_json(two_objects(false, false));
+  EXPECT_EQ(j["model"], "models/mugs");
+  EXPECT_EQ(j["step"], 48000);
+  EXPECT_EQ(j["sampling"]["clouds"], 8);
+  EXPECT_EQ(j["sampling"]["reject_collisions"], false);
+  ASSERT_EQ(j["objects"].size(), 2U);
+  EXPECT_EQ(j["objects"][1]["n"], 40);
+  EXPECT_DOUBLE_EQ(j["mean_emd"].get<double>(), 0.4);
+  EXPECT_FALSE(j.contains("mean_nearest_emd"));
+  EXPECT_FALSE(j.contains("success"));
+  EXPECT_FALSE(j["objects"][0].contains("floor_emd"));
+}
+
+TEST(EvaluationReport, BaselinesAndSuccessAreSummed) {
+  const nlohmann::json j = to_json(two_objects(true, true));
+  EXPECT_DOUBLE_EQ(j["mean_random_emd"].get<double>(), 1.6);
+  EXPECT_DOUBLE_EQ(j["mean_nearest_emd"].get<double>(), 0.5);
+  // a is below its nearest object (0.3 < 0.6), b is not (0.5 > 0.4).
+  EXPECT_EQ(j["objects_below_nearest"], 1);
+  EXPECT_EQ(j["nearest_comparison"]["losses"], 1);
+  // Only a has a floor: no mean floor, a floor comparison over one object.
+  EXPECT_FALSE(j.contains("mean_floor_emd"));
+  EXPECT_TRUE(j["objects"][1]["floor_emd"].is_null());
+  EXPECT_EQ(j["floor_comparison"]["objects"], 1);
+  EXPECT_NEAR(j["floor_comparison"]["median_model_excess"].get<double>(), 0.05, 1e-12);
+  EXPECT_EQ(j["success"]["successes"], 50);
+  EXPECT_EQ(j["success"]["trials"], 90);
+  EXPECT_NEAR(j["success"]["collision_rate"].get<double>(), 1 - 65.0 / 90, 1e-12);
+  EXPECT_EQ(j["nearest_success"]["successes"], 40);
+  EXPECT_EQ(j["nearest_success_comparison"]["wins"], 1);  // a: 80 % against 40 %
+  EXPECT_EQ(j["objects"][0]["nearest_success"]["trials"], 50);
+}
+
+TEST(EvaluationReport, MarkdownRowsHaveTheHeadersColumns) {
+  for (const bool baselines : {false, true}) {
+    for (const bool success : {false, true}) {
+      const EvaluationReport r = two_objects(baselines, success);
+      std::istringstream table(markdown_table(r));
+      std::vector<long> columns;
+      for (std::string line; std::getline(table, line);) {
+        columns.push_back(std::count(line.begin(), line.end(), '|'));
+      }
+      ASSERT_EQ(columns.size(), 4U);  // header, rule, two objects
+      EXPECT_EQ(std::count(columns.begin(), columns.end(), columns[0]), 4) << baselines << success;
+      EXPECT_EQ(columns[0], 5 + (baselines ? 3 : 0) + (success ? (baselines ? 2 : 1) : 0));
+    }
+  }
+  const std::string page = to_markdown(two_objects(true, true));
+  EXPECT_EQ(page.rfind("# EMD of models/mugs (step 48000; rkmk4-20, guidance 2)", 0), 0U) << page;
+  EXPECT_NE(page.find("| a | 50 | 0.2000 0.3000 0.4000 | 0.3000 | 1.5000 | 0.6000 (t1) | 0.2500 |"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("0.4000 (t2, n = 30) | n/a |"), std::string::npos) << page;
+  EXPECT_NE(page.find("mean EMD over 2 objects: 0.4000 (random grasps 1.6000"), std::string::npos);
+  EXPECT_NE(page.find("simulated success 55.6 % (50 of 90 grasps"), std::string::npos) << page;
+}
+
+TEST(EvaluationReport, FilterNoteNamesTheChecks) {
+  EXPECT_EQ(filter_note({}), "");
+  gripper::GraspChecks refine;
+  refine.refine = true;
+  EXPECT_EQ(filter_note(refine), ", refined");
+  gripper::GraspChecks both;
+  both.collisions = both.shallow = true;
+  EXPECT_EQ(filter_note(both), ", colliding and shallow grasps rejected");
+}
+
+TEST(EvaluationReport, EmptyOrMixedReportsAreErrors) {
+  EvaluationReport empty;
+  expect_error([&] { to_json(empty); }, "no objects");
+  expect_error([&] { summary(empty); }, "no objects");
+  EvaluationReport mixed = two_objects(true, false);
+  mixed.objects[1].baselines.reset();
+  expect_error([&] { to_json(mixed); }, "only some objects");
+}
+
+}  // namespace
+}  // namespace graspecmf::eval
