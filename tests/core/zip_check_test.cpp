@@ -89,9 +89,22 @@ TEST(ZipCheck, DamagedCentralDirectoryIsRefused) {
   method[central_entry(method, "archive/data.pkl") + 10] = 12;  // bzip2
   expect_refused(method, "compression method 12");
 
+  std::string name = weights();
+  name[central_entry(name, "archive/data.pkl") + 46 + 14] = 'q';  // archive/data.pkl → data.pql
+  expect_refused(name, "its name differs from its local header's");
+
   std::string offset = weights();
   offset[central_entry(offset, "archive/data.pkl") + 45] = 0x7f;  // local header far past the end
   expect_refused(offset, "local header is missing or misplaced");
+}
+
+// fuzz_checkpoint's first finding: a checkpoint whose central directory names one code file
+// differently from its local header passed the CRC checks, and LibTorch's TorchScript importer
+// then terminated the process (an exception through a noexcept frame while parsing a type).
+TEST(FuzzRegressions, CheckpointWithARenamedCodeFile) {
+  const std::string bytes = read_input_file(
+      testing::fuzz_regression("checkpoint", "central_name_differs_libtorch_terminate.pt"));
+  expect_refused(bytes, "its name differs from its local header's");
 }
 
 TEST(ZipCheck, TrailingBytesAndEmptyInputAreRefused) {

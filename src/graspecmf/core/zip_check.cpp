@@ -199,8 +199,12 @@ void check_entry(const ZipBytes& zip, const Entry& entry, const Directory& dir) 
   if (entry.local > dir.offset || zip.read(entry.local, 4) != kLocalSignature) {
     zip.fail(quoted + ": its local header is missing or misplaced");
   }
-  const std::uint64_t data =
-      entry.local + kLocalSize + zip.read(entry.local + 26, 2) + zip.read(entry.local + 28, 2);
+  // Readers find entries by their central-directory names: a damaged name must not pass.
+  const std::uint64_t local_name = zip.read(entry.local + 26, 2);
+  if (zip.range(entry.local + kLocalSize, local_name, "an entry name") != entry.name) {
+    zip.fail(quoted + ": its name differs from its local header's");
+  }
+  const std::uint64_t data = entry.local + kLocalSize + local_name + zip.read(entry.local + 28, 2);
   if (data > dir.offset || entry.compressed > dir.offset - data) {
     zip.fail(quoted + "'s data runs into the central directory");
   }

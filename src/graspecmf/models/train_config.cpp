@@ -53,7 +53,9 @@ void read(const json& j, const char* key, T& value, const std::string& section) 
 // Throws Error if j has a key outside `known`.
 void only(const json& j, std::initializer_list<const char*> known, const std::string& section) {
   if (!j.is_object()) throw Error("train config: " + section + " must be an object");
-  for (const auto& [key, value] : j.items()) {
+  for (const auto& item : j.items()) {
+    // A named copy: C++17 lambdas cannot capture a structured binding (clang before 16 refuses).
+    const std::string key = item.key();
     if (std::none_of(known.begin(), known.end(), [&](const char* k) { return key == k; })) {
       throw Error("train config: unknown setting " + section + key);
     }
