@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "graspecmf/core/isolated_call.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/object_summary.hpp"
 
@@ -18,6 +19,14 @@ void BM_ReadAcronymFile(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 2000);  // grasps
 }
 BENCHMARK(BM_ReadAcronymFile)->Unit(benchmark::kMillisecond);
+
+// The part of a read that isolates libhdf5: starting and reaping a child process that does nothing.
+void BM_IsolatedEmptyCall(benchmark::State& state) {
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(graspecmf::run_isolated([] {}, std::chrono::seconds(10)));
+  }
+}
+BENCHMARK(BM_IsolatedEmptyCall)->Unit(benchmark::kMillisecond);
 
 void BM_WriteAcronymFile(benchmark::State& state) {
   const auto record = graspecmf::data::read_acronym_file(kSample);

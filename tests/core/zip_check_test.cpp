@@ -89,6 +89,10 @@ TEST(ZipCheck, DamagedCentralDirectoryIsRefused) {
   method[central_entry(method, "archive/data.pkl") + 10] = 12;  // bzip2
   expect_refused(method, "compression method 12");
 
+  std::string flags = weights();
+  flags[central_entry(flags, "archive/data.pkl") + 8] |= 0x40;  // strong encryption
+  expect_refused(flags, "entry 'archive/data.pkl' has unsupported flags 0x");
+
   std::string name = weights();
   name[central_entry(name, "archive/data.pkl") + 46 + 14] = 'q';  // archive/data.pkl → data.pql
   expect_refused(name, "its name differs from its local header's");
@@ -105,6 +109,14 @@ TEST(FuzzRegressions, CheckpointWithARenamedCodeFile) {
   const std::string bytes = read_input_file(
       testing::fuzz_regression("checkpoint", "central_name_differs_libtorch_terminate.pt"));
   expect_refused(bytes, "its name differs from its local header's");
+}
+
+// Its second: a central-directory entry of a code file with unsupported flag bits (0x08da) passed,
+// LibTorch's ZIP reader refused the entry, and the importer terminated the process again.
+TEST(FuzzRegressions, CheckpointWithUnsupportedEntryFlags) {
+  const std::string bytes =
+      read_input_file(testing::fuzz_regression("checkpoint", "entry_flags_libtorch_terminate.pt"));
+  expect_refused(bytes, "has unsupported flags 0x8da");
 }
 
 TEST(ZipCheck, TrailingBytesAndEmptyInputAreRefused) {

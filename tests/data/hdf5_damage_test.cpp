@@ -68,5 +68,22 @@ TEST(FuzzRegressions, AcronymStringsMustBeOneNonNullString) {
       "/object/file must hold one string");
 }
 
+// Found by fuzz_acronym: damaged files on which libhdf5 itself hangs, or (with AddressSanitizer)
+// asks for an impossible allocation. They are read in a child process first, so they end in one
+// error line and the caller lives on.
+TEST(FuzzRegressions, LibHdf5HangsAndCrashesAreErrors) {
+  testing::expect_error(
+      [] {
+        read_acronym_file(testing::fuzz_regression("acronym", "hdf5_global_heap_hang.h5"),
+                          std::chrono::seconds(2));
+      },
+      "hdf5_global_heap_hang.h5: damaged HDF5 file (the HDF5 library did not finish within 2 s");
+  testing::expect_error(
+      [] {
+        read_acronym_file(testing::fuzz_regression("acronym", "hdf5_allocation_size_too_big.h5"));
+      },
+      "hdf5_allocation_size_too_big.h5: ");
+}
+
 }  // namespace
 }  // namespace graspecmf::data

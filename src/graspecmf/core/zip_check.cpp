@@ -169,6 +169,17 @@ std::uint32_t inflated_crc(const ZipBytes& zip, const Entry& entry, std::string_
   return static_cast<std::uint32_t>(crc);
 }
 
+// A flag word in hexadecimal.
+std::string hex(std::uint64_t value) {
+  constexpr const char* kDigits = "0123456789abcdef";
+  std::string text;
+  do {
+    text.insert(text.begin(), kDigits[value & 15]);
+    value >>= 4;
+  } while (value != 0);
+  return text;
+}
+
 // Reads the central-directory entry at `at`; returns the offset of the next one.
 std::uint64_t read_entry(const ZipBytes& zip, std::uint64_t at, std::uint64_t end, Entry& entry) {
   if (at + kCentralSize > end || zip.read(at, 4) != kCentralSignature) {
@@ -191,7 +202,13 @@ std::uint64_t read_entry(const ZipBytes& zip, std::uint64_t at, std::uint64_t en
 // Checks one entry's local header, bounds, size and CRC-32.
 void check_entry(const ZipBytes& zip, const Entry& entry, const Directory& dir) {
   const std::string quoted = "entry '" + entry.name + "'";
-  if ((entry.flags & 1) != 0) zip.fail(quoted + " is encrypted");
+  // Allowed: deflate options (bits 1, 2), a data descriptor (3), UTF-8 names (11). Encryption
+  // (0, 6, 13) and patch data (5) make readers refuse the entry, LibTorch's at a point it cannot
+  // recover from.
+  constexpr std::uint64_t kAllowedFlags = 0x080e;
+  if ((entry.flags & ~kAllowedFlags) != 0) {
+    zip.fail(quoted + " has unsupported flags 0x" + hex(entry.flags) + " (encryption, patches)");
+  }
   if (entry.method != 0 && entry.method != 8) {
     zip.fail(quoted + " uses compression method " + std::to_string(entry.method) +
              " (only stored and deflated entries are read)");

@@ -1,9 +1,11 @@
 #include "graspecmf/data/acronym_file.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <utility>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/isolated_call.hpp"
 #include "graspecmf/data/hdf5_file.hpp"
 
 namespace graspecmf::data {
@@ -160,7 +162,10 @@ std::vector<lie::Pose> AcronymGraspFile::successful_grasps() const {
   return grasps;
 }
 
-AcronymGraspFile read_acronym_file(const fs::path& path) {
+namespace {
+
+// read_acronym_file's work, in this process.
+AcronymGraspFile read_acronym_file_here(const fs::path& path) {
   const Hdf5Reader file(path);
   for (const char* required : {kTransforms, "object/file", "object/scale"}) {
     if (!file.has_dataset(required)) {
@@ -214,6 +219,24 @@ AcronymGraspFile read_acronym_file(const fs::path& path) {
     throw Error(path.string() + ": /object/inertia must be finite with a positive trace");
   }
   return record;
+}
+
+}  // namespace
+
+AcronymGraspFile read_acronym_file(const fs::path& path) {
+  std::error_code ec;
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  return read_acronym_file(path, std::chrono::seconds(60 + (ec ? 0 : bytes / 10'000'000)));
+}
+
+AcronymGraspFile read_acronym_file(const fs::path& path, std::chrono::seconds limit) {
+  // A file the child read, or refused with an Error, is then read here.
+  const IsolatedOutcome probe = run_isolated([&] { read_acronym_file_here(path); }, limit);
+  if (!probe.completed) {
+    throw Error(path.string() + ": damaged HDF5 file (the HDF5 library " + probe.failure +
+                " reading it)");
+  }
+  return read_acronym_file_here(path);
 }
 
 void write_acronym_file(const AcronymGraspFile& record, const fs::path& path) {

@@ -2,6 +2,7 @@
 // ACRONYM per-object grasp files (HDF5): the in-memory record, a validating reader and a writer
 // that reproduces the original layout exactly (dataset paths, types, chunking, deflate level).
 
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -47,8 +48,12 @@ struct AcronymGraspFile {
 };
 
 // Reads an ACRONYM grasp file. Requires /grasps/transforms (N×4×4), /object/file and /object/scale;
-// quality arrays, when present, must have N entries. Throws Error naming file and dataset.
+// quality arrays, when present, must have N entries. Throws Error naming file and dataset. The
+// file is first read in a child process (core/isolated_call.hpp), because libhdf5 can crash, abort
+// or hang on a damaged file: such a file gives an Error too, also when reading takes longer than
+// `limit` (by default 60 s plus 1 s per 10 MB).
 AcronymGraspFile read_acronym_file(const std::filesystem::path& path);
+AcronymGraspFile read_acronym_file(const std::filesystem::path& path, std::chrono::seconds limit);
 
 // Writes the record in ACRONYM's layout, atomically (a failure leaves no file and keeps any old
 // one). Throws Error if array lengths disagree or a number is not finite.
