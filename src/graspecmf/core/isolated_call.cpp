@@ -8,9 +8,13 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstring>
 
 #include "graspecmf/core/error.hpp"
+
+// Present only in sanitizer builds (the fuzzers): the callback a sanitizer runs before it exits.
+extern "C" void __sanitizer_set_death_callback(void (*callback)()) __attribute__((weak));
 
 namespace graspecmf {
 namespace {
@@ -20,6 +24,10 @@ constexpr int kCompleted = 0;
 constexpr int kOtherException = 3;
 
 [[noreturn]] void run_child(const std::function<void()>& call) {
+  // The child dies plainly: the parent's crash handlers (a sanitizer's or libFuzzer's, which would
+  // report the child's crash as the parent's) are taken away first.
+  for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
+  if (__sanitizer_set_death_callback != nullptr) __sanitizer_set_death_callback(nullptr);
   const int null = ::open("/dev/null", O_WRONLY);
   if (null >= 0) {
     ::dup2(null, STDOUT_FILENO);
