@@ -8,8 +8,6 @@
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/network_frame.hpp"
-#include "graspecmf/flow/prior.hpp"
-#include "graspecmf/flow/sampler.hpp"
 
 namespace graspecmf::models {
 
@@ -70,7 +68,7 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
     }
   }
   torch::NoGradGuard no_grad;
-  // The prior is drawn on the CPU, so a seed gives the same grasps on every device.
+  // The generator's random draws are on the CPU, so a seed gives the same grasps on every device.
   const c10::Device device = model.device();
   const Condition condition = model.condition(points.to(device));
   std::vector<lie::Pose> grasps;

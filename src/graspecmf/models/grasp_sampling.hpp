@@ -17,10 +17,10 @@ namespace graspecmf::models {
 // n grasps for a cloud in metres (any frame, ≥ k points per cloud): split into settings.clouds
 // consecutive equal parts (a remainder is dropped), each centred on its centroid and scaled by
 // position_scale for the encoder; the parts' z are averaged and the grasps placed about the mean
-// centroid. The prior is drawn from seed; grasps are returned as T_object_gripper in the cloud's
-// frame, metres. Runs on the model's device; the prior is drawn on the CPU, so a seed
-// gives the same grasps (to rounding) on every device. A `filter` that refines moves each grasp
-// (CloudGraspFilter::refined) before its checks. With a `filter`, only grasps it keeps are
+// centroid. The generator's random draws come from seed; grasps are returned as T_object_gripper
+// in the cloud's frame, metres. Runs on the model's device; the draws are made on the CPU, so a
+// seed gives the same grasps (to rounding) on every device. A `filter` that refines moves each
+// grasp (CloudGraspFilter::refined) before its checks. With a `filter`, only grasps it keeps are
 // returned: the first round draws n (the grasps of the unfiltered call), later ones the missing
 // count over the kept fraction so far, with a quarter to spare (64 to 64 n grasps), and Error is
 // thrown if fewer than n are kept after kMaxSamplingRounds. Throws Error for an empty or non-finite

@@ -28,7 +28,7 @@ MlpFieldImpl::MlpFieldImpl(VectorFieldOptions options) : options_(std::move(opti
 
 torch::Tensor MlpFieldImpl::condition(const torch::Tensor& object_z) const {
   detail::require_shape(object_z, "MlpField: z", {-1, options_.z_channels});
-  return apply_linear(z, object_z);
+  return torch::nn::functional::linear(object_z, z->weight);
 }
 
 std::pair<torch::Tensor, torch::Tensor> MlpFieldImpl::forward(const torch::Tensor& condition,
@@ -43,9 +43,8 @@ std::pair<torch::Tensor, torch::Tensor> MlpFieldImpl::forward(const torch::Tenso
   const torch::Tensor inputs =
       torch::cat({rotation.reshape({g, 9}), position, time.reshape({g, 1})}, 1);
   // W_z (keep · z) + b: the null condition keeps only the bias.
-  const torch::Tensor bias = z->bias.unsqueeze(0);
   const torch::Tensor z_part =
-      (condition.index_select(0, object_index) - bias) * keep.unsqueeze(1) + bias;
+      condition.index_select(0, object_index) * keep.unsqueeze(1) + z->bias;
   torch::Tensor h = torch::leaky_relu(apply_linear(pose, inputs) + z_part, options_.slope);
   for (const torch::nn::Linear& layer : hidden) {
     h = torch::leaky_relu(apply_linear(layer, h), options_.slope);

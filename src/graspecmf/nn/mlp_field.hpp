@@ -19,7 +19,8 @@ class MlpFieldImpl : public torch::nn::Module {
   // Throws Error on an empty width list, a non-positive width or z_channels, or z_every_layer.
   explicit MlpFieldImpl(VectorFieldOptions options);
 
-  // The first layer's z part, W_z z + b, for z [O, z_channels]: computed once per object.
+  // The first layer's z part without its bias, W_z z, for z [O, z_channels]: computed once per
+  // object.
   torch::Tensor condition(const torch::Tensor& z) const;
 
   // (ω, v), each [G, 3], for grasps R [G, 3, 3], p [G, 3] at times t [G] of the objects
@@ -35,7 +36,7 @@ class MlpFieldImpl : public torch::nn::Module {
   const VectorFieldOptions& options() const { return options_; }
 
   torch::nn::Linear pose{nullptr};        // [R ; p ; t] (13) → hidden_widths[0], no bias
-  torch::nn::Linear z{nullptr};           // z → hidden_widths[0], with the first layer's bias
+  torch::nn::Linear z{nullptr};           // z → hidden_widths[0], holding the first layer's bias
   std::vector<torch::nn::Linear> hidden;  // hidden_widths[l − 1] → hidden_widths[l]
   torch::nn::Linear out{nullptr};         // last width → 6: (ω, v)
 

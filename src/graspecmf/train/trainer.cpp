@@ -250,8 +250,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   const std::string init_text = checked_init(run_dir, init, resuming);
   if (resuming) {
     models::TrainingState state;
-    models::load_checkpoint(checkpoint, *model, &optimizer, &state,
-                            average ? average.get() : nullptr);
+    models::load_checkpoint(checkpoint, *model, &optimizer, &state, average.get());
     sampler.restore(state.sampler_state);
     generator.set_state(state.generator);
     result.resumed_from = state.step;
@@ -261,8 +260,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
   truncate_log(run_dir / kLogFile, result.resumed_from);
   const auto save = [&](std::int64_t step) {
     models::save_checkpoint(checkpoint, *model, optimizer,
-                            {step, sampler.state(), generator.get_state()},
-                            average ? average.get() : nullptr);
+                            {step, sampler.state(), generator.get_state()}, average.get());
   };
 
   model->train();
