@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/nn/graspnet_backbone.hpp"
 #include "nn_test_support.hpp"
 
 namespace graspecmf::nn {
@@ -92,6 +93,21 @@ TEST_F(PointNet2Test, BadInputIsAnError) {
   SetAbstraction layer(SetAbstractionOptions{8, 0.5, 4, {8}}, 1);
   EXPECT_THROW(layer->forward(torch::randn({1, 5, 3}), torch::randn({1, 5, 1})), Error);
   EXPECT_THROW(layer->forward(torch::randn({1, 9, 3}), {}), Error);
+}
+
+TEST_F(PointNet2Test, GraspNetBackboneHasTheReferenceShapes) {
+  GraspNetBackbone backbone(GraspNetBackboneOptions{2, 0.5, 16});
+  const auto out = backbone->forward(torch::randn({3, 200, 3}), torch::randn({3, 200, 2}));
+  EXPECT_EQ(out.sizes(), (std::vector<int64_t>{3, 1024}));
+  EXPECT_GE(out.min().item<float>(), 0.0F);
+  // The decoder's backbone in the spec's layer shapes (SA1 5 → 64 → 64 → 128, SA2 131 → 128 →
+  // 128 → 256, SA3 259 → 256 → 256 → 512, FC 512 → 1024 → 1024), every Linear with its bias and
+  // every BatchNorm with its scale and shift. The centroid counts carry no weights.
+  int64_t parameters = 0;
+  for (const auto& p : backbone->parameters()) parameters += p.numel();
+  EXPECT_EQ(parameters, 1925824);
+  EXPECT_THROW(GraspNetBackbone(GraspNetBackboneOptions{2, 0.5, 3}), Error);
+  EXPECT_THROW(GraspNetBackbone(GraspNetBackboneOptions{2, 0.0, 16}), Error);
 }
 
 }  // namespace

@@ -29,6 +29,10 @@ at::Tensor gather_rows(const at::Tensor& values, const at::Tensor& index) {
 
 }  // namespace
 
+torch::nn::BatchNorm1dOptions pointnet_norm_options(int64_t width) {
+  return torch::nn::BatchNorm1dOptions(width).eps(1e-3);
+}
+
 at::Tensor farthest_point_sample(const at::Tensor& points, int64_t m) {
   require_shape(points, "farthest_point_sample: points", {-1, -1, 3});
   const int64_t b = points.size(0), n = points.size(1);
@@ -85,9 +89,8 @@ SetAbstractionImpl::SetAbstractionImpl(SetAbstractionOptions options, int64_t in
     require(width >= 1, "SetAbstraction: widths must be positive");
     linear.push_back(
         register_module("linear" + std::to_string(l), torch::nn::Linear(width_in, width)));
-    norm.push_back(
-        register_module("norm" + std::to_string(l),
-                        torch::nn::BatchNorm1d(torch::nn::BatchNorm1dOptions(width).eps(1e-3))));
+    norm.push_back(register_module("norm" + std::to_string(l),
+                                   torch::nn::BatchNorm1d(pointnet_norm_options(width))));
     width_in = width;
   }
 }

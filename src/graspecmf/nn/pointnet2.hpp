@@ -27,6 +27,9 @@ at::Tensor farthest_point_sample(const at::Tensor& points, int64_t m);
 at::Tensor ball_query(const at::Tensor& points, const at::Tensor& centroids, double radius,
                       int64_t nsample);
 
+// The BatchNorm options of every PointNet++ layer: ε 10⁻³ (TensorFlow's, as in the reference).
+torch::nn::BatchNorm1dOptions pointnet_norm_options(int64_t width);
+
 struct SetAbstractionOptions {
   int64_t centroids = 0;        // farthest-point centroids; 0 = one group of every point
   double radius = 0.0;          // ball-query radius (unused when centroids = 0)
