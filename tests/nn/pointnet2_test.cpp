@@ -31,8 +31,8 @@ std::vector<int64_t> as_vector(const torch::Tensor& index) {
 }
 
 TEST_F(PointNet2Test, FarthestPointsStartAtZeroAndBreakTiesByLowerIndex) {
-  // From 0 the farthest is 9; then 4 and 5 are both 4 away from {0, 9} and 4 wins; then 2, 7 are
-  // 2 away (2 before 7)...
+  // From 0 the farthest is 9; then 4 and 5 are both 4 away from {0, 9} and 4 wins; then 2, 6 and 7
+  // are 2 away from {0, 9, 4} and 2 wins.
   EXPECT_EQ(as_vector(farthest_point_sample(points_on_a_line(10), 4)),
             (std::vector<int64_t>{0, 9, 4, 2}));
   const auto cloud = torch::randn({3, 50, 3});

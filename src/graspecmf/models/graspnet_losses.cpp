@@ -8,6 +8,15 @@ namespace graspecmf::models {
 
 using nn::detail::require_shape;
 
+namespace {
+
+// e of control points a and b [..., 6, 3] (broadcast): the mean over the six of the L1 distance.
+at::Tensor mean_l1(const at::Tensor& a, const at::Tensor& b) {
+  return (a - b).abs().sum(-1).mean(-1);
+}
+
+}  // namespace
+
 at::Tensor panda_control_points() {
   const float x = 0.05268743F, y = 0.00005996F, inner = 0.07527314F, outer = 0.10527314F;
   return at::tensor({0.0F, 0.0F, 0.0F, 0.0F, 0.0F, 0.0F, x, -y, inner, -x, y, inner, x, -y, outer,
@@ -25,7 +34,7 @@ at::Tensor grasp_control_points(const flow::PoseBatch& grasps, double scale) {
 at::Tensor pairwise_control_point_distance(const at::Tensor& a, const at::Tensor& b) {
   require_shape(a, "pairwise_control_point_distance: a", {-1, 6, 3});
   require_shape(b, "pairwise_control_point_distance: b", {-1, 6, 3});
-  return (a.unsqueeze(1) - b.unsqueeze(0)).abs().sum(3).mean(2);
+  return mean_l1(a.unsqueeze(1), b.unsqueeze(0));
 }
 
 at::Tensor vae_loss(const at::Tensor& predicted, const at::Tensor& truth,
@@ -37,7 +46,7 @@ at::Tensor vae_loss(const at::Tensor& predicted, const at::Tensor& truth,
   require_shape(confidence, "vae_loss: confidence", {g});
   require_shape(mu, "vae_loss: mu", {g, -1});
   require_shape(logvar, "vae_loss: logvar", {g, mu.size(1)});
-  const auto error = (predicted - truth).abs().sum(2).mean(1);
+  const auto error = mean_l1(predicted, truth);
   const auto kl = -0.5 * (1 + logvar - mu.pow(2) - logvar.exp()).sum(1);
   return (confidence * error).mean() -
          confidence_weight * confidence.clamp_min(1e-10).log().mean() + kl_weight * kl.mean();

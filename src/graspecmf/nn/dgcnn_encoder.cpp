@@ -8,6 +8,7 @@
 
 #include "graspecmf/nn/apply_linear.hpp"
 #include "graspecmf/nn/checks.hpp"
+#include "graspecmf/nn/gather_rows.hpp"
 #include "graspecmf/nn/knn.hpp"
 
 namespace graspecmf::nn {
@@ -33,21 +34,13 @@ DgcnnEncoderImpl::DgcnnEncoderImpl(EncoderOptions options) : options_(std::move(
 
 torch::Tensor DgcnnEncoderImpl::forward(const torch::Tensor& points) const {
   detail::require_clouds(points, "DgcnnEncoder", options_.k);
-  const int64_t batch = points.size(0);
-  const int64_t n = points.size(1);
   const int64_t k = options_.k;
-  // Row offsets that turn per-cloud neighbour indices into indices of the flattened batch.
-  const torch::Tensor offsets =
-      (torch::arange(batch, points.options().dtype(torch::kLong)) * n).view({batch, 1, 1});
   torch::Tensor h = points;
   std::vector<torch::Tensor> outputs;
   for (std::size_t l = 0; l < neighbour.size(); ++l) {
-    const torch::Tensor index = (knn(h.detach().contiguous(), k) + offsets).view({-1});
-    const torch::Tensor a = apply_linear(neighbour[l], h);  // [B, N, C]
-    const int64_t c = a.size(-1);
+    const torch::Tensor index = knn(h.detach().contiguous(), k);
     const torch::Tensor edges =
-        a.reshape({batch * n, c}).index_select(0, index).view({batch, n, k, c}) +
-        apply_linear(centre[l], h).unsqueeze(2);
+        gather_rows(apply_linear(neighbour[l], h), index) + apply_linear(centre[l], h).unsqueeze(2);
     h = torch::leaky_relu(edges, options_.slope).mean(2);
     outputs.push_back(h);
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "graspecmf/nn/checks.hpp"
+#include "graspecmf/nn/gather_rows.hpp"
 #include "graspecmf/nn/vn_layers.hpp"
 #include "graspecmf/nn/vn_leaky_relu_math.hpp"
 
@@ -179,12 +180,8 @@ at::Tensor edge_mean_leaky_relu(const at::Tensor& per_point, const at::Tensor& i
 
 at::Tensor edge_mean_leaky_relu_any_device(const at::Tensor& per_point, const at::Tensor& index,
                                            double slope) {
-  const int64_t batch = per_point.size(0), n = per_point.size(1), k = index.size(2);
   const int64_t c = per_point.size(3) / 4;
-  const auto offsets = at::arange(batch, index.options()).view({batch, 1, 1}) * n;
-  const auto neighbours = per_point.reshape({batch * n, 3, 4 * c})
-                              .index_select(0, (index + offsets).reshape({-1}))
-                              .view({batch, n, k, 3, 4 * c});
+  const auto neighbours = gather_rows(per_point, index);  // [B, N, k, 3, 4C]
   const auto centre = per_point.unsqueeze(2);
   const auto q = neighbours.narrow(-1, 0, c) + centre.narrow(-1, c, c);
   const auto d = neighbours.narrow(-1, 2 * c, c) + centre.narrow(-1, 3 * c, c);

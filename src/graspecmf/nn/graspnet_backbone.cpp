@@ -1,7 +1,5 @@
 #include "graspecmf/nn/graspnet_backbone.hpp"
 
-#include <algorithm>
-
 #include "graspecmf/nn/checks.hpp"
 
 namespace graspecmf::nn {
@@ -10,7 +8,7 @@ using detail::require;
 
 GraspNetBackboneImpl::GraspNetBackboneImpl(GraspNetBackboneOptions options) {
   require(options.centroids >= 4, "GraspNetBackbone: centroids must be at least 4");
-  const int64_t second = std::max<int64_t>(options.centroids / 4, 1);
+  const int64_t second = options.centroids / 4;
   sa1 = register_module(
       "sa1",
       SetAbstraction(SetAbstractionOptions{options.centroids, options.radius, 64, {64, 64, 128}},

@@ -18,7 +18,7 @@ namespace graspecmf::nn {
 struct GraspNetBackboneOptions {
   int64_t in_features = 0;  // per-point features besides xyz
   double radius = 0.02;  // the first ball query's radius in the cloud's units; the second's is 2×
-  int64_t centroids = 128;  // the first layer's centroids; the second has a quarter (at least 1)
+  int64_t centroids = 128;  // the first layer's centroids; the second has a quarter
 };
 
 class GraspNetBackboneImpl : public torch::nn::Module {

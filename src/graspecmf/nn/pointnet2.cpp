@@ -7,27 +7,14 @@
 #include <algorithm>
 #include <limits>
 #include <string>
-#include <vector>
 
 #include "graspecmf/nn/checks.hpp"
+#include "graspecmf/nn/gather_rows.hpp"
 
 namespace graspecmf::nn {
 
 using detail::require;
 using detail::require_shape;
-
-namespace {
-
-// The rows of values [B, N, C] at index [B, ...] (int64, entries in [0, N)) → [B, ..., C].
-at::Tensor gather_rows(const at::Tensor& values, const at::Tensor& index) {
-  const int64_t b = values.size(0), n = values.size(1);
-  const auto flat = (index.reshape({b, -1}) + at::arange(b, index.options()).view({b, 1}) * n);
-  std::vector<int64_t> shape(index.sizes().begin(), index.sizes().end());
-  shape.push_back(values.size(2));
-  return values.reshape({b * n, values.size(2)}).index_select(0, flat.reshape({-1})).view(shape);
-}
-
-}  // namespace
 
 torch::nn::BatchNorm1dOptions pointnet_norm_options(int64_t width) {
   return torch::nn::BatchNorm1dOptions(width).eps(1e-3);
