@@ -97,6 +97,10 @@ TEST(ZipCheck, DamagedCentralDirectoryIsRefused) {
   name[central_entry(name, "archive/data.pkl") + 46 + 14] = 'q';  // archive/data.pkl → data.pql
   expect_refused(name, "its name differs from its local header's");
 
+  std::string directory = weights();
+  directory[central_entry(directory, "archive/data.pkl") + 38] = 0x10;  // MS-DOS directory
+  expect_refused(directory, "entry 'archive/data.pkl' is marked as a directory but is a file");
+
   std::string offset = weights();
   offset[central_entry(offset, "archive/data.pkl") + 45] = 0x7f;  // local header far past the end
   expect_refused(offset, "local header is missing or misplaced");
@@ -112,11 +116,24 @@ TEST(FuzzRegressions, CheckpointWithARenamedCodeFile) {
 }
 
 // Its second: a central-directory entry of a code file with unsupported flag bits (0x08da) passed,
-// LibTorch's ZIP reader refused the entry, and the importer terminated the process again.
+// LibTorch's ZIP reader refused the entry, and the importer terminated the process again. (An
+// earlier entry of the same input is also marked as a directory, which is now refused first.)
 TEST(FuzzRegressions, CheckpointWithUnsupportedEntryFlags) {
   const std::string bytes =
       read_input_file(testing::fuzz_regression("checkpoint", "entry_flags_libtorch_terminate.pt"));
-  expect_refused(bytes, "has unsupported flags 0x8da");
+  expect_refused(bytes,
+                 "entry 'archive/code/__torch__/___torch_mangle_7.py' is marked as a "
+                 "directory but is a file");
+}
+
+// Its third: a code file's external attributes became 0xfffffff4, whose MS-DOS directory bit made
+// LibTorch's ZIP reader return it empty, and the importer terminated the process on the empty code.
+TEST(FuzzRegressions, CheckpointWithACodeFileMarkedAsADirectory) {
+  const std::string bytes = read_input_file(
+      testing::fuzz_regression("checkpoint", "directory_attribute_libtorch_terminate.pt"));
+  expect_refused(bytes,
+                 "entry 'archive/code/__torch__/___torch_mangle_9.py' is marked as a "
+                 "directory but is a file");
 }
 
 TEST(ZipCheck, TrailingBytesAndEmptyInputAreRefused) {

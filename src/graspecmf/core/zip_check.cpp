@@ -101,6 +101,7 @@ Directory find_directory(const ZipBytes& zip) {
 struct Entry {
   std::string name;
   std::uint64_t flags = 0, method = 0, crc = 0, compressed = 0, size = 0, local = 0;
+  std::uint64_t attributes = 0;  // external file attributes (MS-DOS ones in the low byte)
 };
 
 // Replaces the fields that hold the ZIP64 marker by their 64-bit values from the extra field.
@@ -194,6 +195,7 @@ std::uint64_t read_entry(const ZipBytes& zip, std::uint64_t at, std::uint64_t en
   entry.crc = zip.read(at + 16, 4);
   entry.compressed = zip.read(at + 20, 4);
   entry.size = zip.read(at + 24, 4);
+  entry.attributes = zip.read(at + 38, 4);
   entry.local = zip.read(at + 42, 4);
   read_zip64_sizes(zip, at + kCentralSize + name, at + kCentralSize + name + extra, entry);
   return next;
@@ -208,6 +210,13 @@ void check_entry(const ZipBytes& zip, const Entry& entry, const Directory& dir) 
   constexpr std::uint64_t kAllowedFlags = 0x080e;
   if ((entry.flags & ~kAllowedFlags) != 0) {
     zip.fail(quoted + " has unsupported flags 0x" + hex(entry.flags) + " (encryption, patches)");
+  }
+  // LibTorch's ZIP reader (miniz) reads an entry with the MS-DOS directory attribute as empty; an
+  // empty code file then terminated LibTorch's TorchScript importer.
+  constexpr std::uint64_t kDosDirectory = 0x10;
+  if ((entry.attributes & kDosDirectory) != 0 &&
+      (entry.name.empty() || entry.name.back() != '/' || entry.size != 0)) {
+    zip.fail(quoted + " is marked as a directory but is a file");
   }
   if (entry.method != 0 && entry.method != 8) {
     zip.fail(quoted + " uses compression method " + std::to_string(entry.method) +
