@@ -24,6 +24,7 @@
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/input_file.hpp"
+#include "graspecmf/geometry/ply_body.hpp"
 #include "graspecmf/geometry/ply_header.hpp"
 
 namespace graspecmf::geometry {
@@ -254,65 +255,79 @@ TriangleMesh read_obj(const fs::path& path) {
   return mesh;
 }
 
-// ---- STL, PLY and glTF through assimp ----
+// ---- polygons ----
 
-// Refuses a PLY file whose header declares more vertices or faces than the file can hold, or
-// whose vertices lack scalar x, y and z, before assimp allocates for them (or, for vertices
-// without coordinates, fails an internal assertion that aborts the process).
-void check_ply_header(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::string head(64 * 1024, '\0');
-  in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
-  const PlyHeader header =
-      with_read_prefix([&] { return read_ply_header(path, head, fs::file_size(path)); });
-  const auto vertex = std::find_if(header.elements.begin(), header.elements.end(),
-                                   [](const PlyElement& e) { return e.name == "vertex"; });
-  if (vertex == header.elements.end() || !find_xyz(vertex->properties)) {
-    fail_read(path, "the PLY vertices have no scalar x, y and z properties");
-  }
-}
-
-// Appends a polygon face of the mesh part whose first vertex is mesh vertex `offset` as a fan of
-// triangles from its first corner: exact for a convex polygon; a polygon where a fan triangle
-// faces against the polygon's normal (concave) is refused, as is a corner beyond the part's
-// vertices.
-// Our own split replaces aiProcess_Triangulate, whose assertions abort on damaged faces.
-void add_polygon(const fs::path& path, const aiMesh& part, const aiFace& face, std::uint32_t offset,
+// Appends the polygon face with the given mesh vertex indices (all valid) as a fan of triangles
+// from its first corner: exact for a convex polygon; a polygon where a fan triangle faces against
+// the polygon's normal (concave) is refused. Faces of fewer than 3 corners carry no surface and
+// are skipped.
+void add_polygon(const fs::path& path, const std::vector<std::uint32_t>& corners,
                  TriangleMesh& mesh) {
-  for (unsigned int k = 0; k < face.mNumIndices; ++k) {
-    if (face.mIndices[k] >= part.mNumVertices) {
-      fail_read(path, "a face refers to vertex " + std::to_string(face.mIndices[k]) +
-                          " of a part with " + std::to_string(part.mNumVertices) + " vertices");
-    }
-  }
-  const auto corner = [&](unsigned int k) {
-    const aiVector3D& v = part.mVertices[face.mIndices[k]];
-    return Vec3(v.x, v.y, v.z);
-  };
+  const std::size_t n = corners.size();
+  if (n < 3) return;
+  const auto corner = [&](std::size_t k) { return mesh.vertices[corners[k]]; };
   Vec3 normal = Vec3::Zero();  // Newell's normal of the polygon
-  for (unsigned int k = 0; k < face.mNumIndices; ++k) {
-    normal += corner(k).cross(corner((k + 1) % face.mNumIndices));
-  }
-  for (unsigned int k = 1; k + 1 < face.mNumIndices; ++k) {
+  for (std::size_t k = 0; k < n; ++k) normal += corner(k).cross(corner((k + 1) % n));
+  for (std::size_t k = 1; k + 1 < n; ++k) {
     if ((corner(k) - corner(0)).cross(corner(k + 1) - corner(0)).dot(normal) < 0) {
-      fail_read(path, "a face is a polygon of " + std::to_string(face.mNumIndices) +
+      fail_read(path, "a face is a polygon of " + std::to_string(n) +
                           " corners that a fan from its first corner cannot split (concave; "
                           "triangulate the mesh in a mesh editor first)");
     }
-    mesh.triangles.push_back(
-        {offset + face.mIndices[0], offset + face.mIndices[k], offset + face.mIndices[k + 1]});
+    mesh.triangles.push_back({corners[0], corners[k], corners[k + 1]});
   }
 }
 
+// ---- PLY ----
+
+// Reads a PLY mesh (ascii or binary of either byte order): scalar x, y, z of the vertices and the
+// vertex_indices (or vertex_index) lists of the faces; other elements and properties are skipped.
+TriangleMesh read_ply_mesh(const fs::path& path) {
+  return with_read_prefix([&] {
+    const std::string bytes = read_input_file(path);
+    const PlyHeader header = read_ply_header(path, bytes, bytes.size());
+    const auto fail = [&](const std::string& why) { return Error(path.string() + ": " + why); };
+    auto names = ply_xyz_names(path, header);
+    std::string indices = "vertex_indices";
+    if (find_ply_property(header, "face", indices) == nullptr) indices = "vertex_index";
+    const PlyProperty* faces = find_ply_property(header, "face", indices);
+    if (faces == nullptr || faces->count_size == 0) {
+      throw fail("the PLY file has no faces (no list property face.vertex_indices)");
+    }
+    names.emplace_back("face", indices);
+    const std::vector<PlyColumn> columns = read_ply_columns(path, bytes, header, names);
+    TriangleMesh mesh;
+    mesh.vertices = ply_points(columns);
+    const PlyColumn& face = columns[3];
+    std::vector<std::uint32_t> corners;
+    for (std::size_t f = 0; f + 1 < face.starts.size(); ++f) {
+      corners.clear();
+      for (std::size_t k = face.starts[f]; k < face.starts[f + 1]; ++k) {
+        const double v = face.values[k];
+        if (!(v >= 0 && v < static_cast<double>(mesh.vertices.size()) && std::floor(v) == v)) {
+          std::ostringstream why;
+          why << "face " << f << " refers to vertex " << v << " but the file has "
+              << mesh.vertices.size() << " vertices";
+          throw fail(why.str());
+        }
+        corners.push_back(static_cast<std::uint32_t>(v));
+      }
+      add_polygon(path, corners, mesh);
+    }
+    return mesh;
+  });
+}
+
+// ---- STL and glTF through assimp ----
+
 TriangleMesh read_with_assimp(const fs::path& path) {
-  if (lower_extension(path) == ".ply") check_ply_header(path);
   Assimp::Importer importer;
   const aiScene* scene = importer.ReadFile(path.string(), aiProcess_JoinIdenticalVertices |
                                                               aiProcess_PreTransformVertices |
                                                               aiProcess_ValidateDataStructure);
   if (scene == nullptr) fail_read(path, first_line(importer.GetErrorString()));
   TriangleMesh mesh;
+  std::vector<std::uint32_t> corners;
   for (unsigned int m = 0; m < scene->mNumMeshes; ++m) {
     const aiMesh& part = *scene->mMeshes[m];
     const auto offset = static_cast<std::uint32_t>(mesh.vertices.size());
@@ -321,8 +336,16 @@ TriangleMesh read_with_assimp(const fs::path& path) {
       mesh.vertices.emplace_back(v.x, v.y, v.z);
     }
     for (unsigned int f = 0; f < part.mNumFaces; ++f) {
-      // Points and lines carry no surface.
-      if (part.mFaces[f].mNumIndices >= 3) add_polygon(path, part, part.mFaces[f], offset, mesh);
+      const aiFace& face = part.mFaces[f];
+      corners.clear();
+      for (unsigned int k = 0; k < face.mNumIndices; ++k) {
+        if (face.mIndices[k] >= part.mNumVertices) {
+          fail_read(path, "a face refers to vertex " + std::to_string(face.mIndices[k]) +
+                              " of a part with " + std::to_string(part.mNumVertices) + " vertices");
+        }
+        corners.push_back(offset + face.mIndices[k]);
+      }
+      add_polygon(path, corners, mesh);
     }
   }
   return mesh;
@@ -434,7 +457,9 @@ TriangleMesh read_mesh(const fs::path& path) {
   TriangleMesh mesh;
   if (ext == ".obj") {
     mesh = read_obj(path);
-  } else if (ext == ".ply" || ext == ".stl" || ext == ".glb" || ext == ".gltf") {
+  } else if (ext == ".ply") {
+    mesh = read_ply_mesh(path);
+  } else if (ext == ".stl" || ext == ".glb" || ext == ".gltf") {
     mesh = read_with_assimp(path);
   } else {
     fail_read(path,

@@ -24,6 +24,11 @@ bool is_floating(const std::string& type) {
   return type == "float" || type == "float32" || type == "double" || type == "float64";
 }
 
+bool is_signed_integer(const std::string& type) {
+  return type == "char" || type == "int8" || type == "short" || type == "int16" || type == "int" ||
+         type == "int32";
+}
+
 }  // namespace
 
 PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view head,
@@ -70,11 +75,14 @@ PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view he
         words >> count_type >> type;
         property.count_size = type_size(count_type);
         if (property.count_size == 0) throw fail("unknown PLY list count type " + count_type);
+        if (is_floating(count_type)) throw fail("a PLY list count type must be an integer type");
+        property.count_signed = is_signed_integer(count_type);
       }
       words >> property.name;
       property.size = type_size(type);
       if (property.size == 0) throw fail("unknown PLY property type " + type);
       property.floating = is_floating(type);
+      property.is_signed = is_signed_integer(type);
       header.elements.back().properties.push_back(property);
     }
   }
@@ -98,19 +106,6 @@ PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view he
                " bytes after the header); the file is truncated or damaged");
   }
   return header;
-}
-
-std::optional<std::array<std::size_t, 3>> find_xyz(const std::vector<PlyProperty>& properties) {
-  std::array<std::size_t, 3> axis{};
-  for (std::size_t k = 0; k < 3; ++k) {
-    const std::string name(1, static_cast<char>('x' + k));
-    const auto it = std::find_if(properties.begin(), properties.end(), [&](const PlyProperty& p) {
-      return p.name == name && p.count_size == 0;
-    });
-    if (it == properties.end()) return std::nullopt;
-    axis[k] = static_cast<std::size_t>(it - properties.begin());
-  }
-  return axis;
 }
 
 }  // namespace graspecmf::geometry

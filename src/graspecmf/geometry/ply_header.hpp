@@ -2,10 +2,8 @@
 // The header of a PLY file: format, elements and their properties, checked against the file's
 // size so that a reader never allocates for data the file cannot hold.
 
-#include <array>
 #include <cstdint>
 #include <filesystem>
-#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +15,8 @@ struct PlyProperty {
   std::size_t size = 0;        // bytes of one binary value (of a list's items)
   std::size_t count_size = 0;  // bytes of a binary list's length; 0 for a scalar property
   bool floating = false;       // float / double values
+  bool is_signed = false;      // values of a signed integer type (char, short, int)
+  bool count_signed = false;   // a list length of a signed integer type
 };
 
 struct PlyElement {
@@ -37,9 +37,5 @@ struct PlyHeader {
 // after its header (at least one byte per binary scalar, two characters per ASCII value).
 PlyHeader read_ply_header(const std::filesystem::path& path, std::string_view head,
                           std::uintmax_t file_size);
-
-// The indices of the scalar properties named x, y and z among properties, or nullopt if one is
-// missing (a list property of that name does not count).
-std::optional<std::array<std::size_t, 3>> find_xyz(const std::vector<PlyProperty>& properties);
 
 }  // namespace graspecmf::geometry

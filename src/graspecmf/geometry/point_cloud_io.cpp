@@ -10,6 +10,7 @@
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/input_file.hpp"
+#include "graspecmf/geometry/ply_body.hpp"
 #include "graspecmf/geometry/ply_header.hpp"
 
 namespace graspecmf::geometry {
@@ -84,54 +85,8 @@ std::vector<Vec3> read_npy(const fs::path& path, const std::string& bytes) {
 }
 
 std::vector<Vec3> read_ply(const fs::path& path, const std::string& bytes) {
-  const auto fail = [&](const std::string& why) { return Error(path.string() + ": " + why); };
   const PlyHeader header = read_ply_header(path, bytes, bytes.size());
-  if (header.format == "binary_big_endian") {
-    throw fail("PLY format must be ascii or binary_little_endian");
-  }
-  if (header.elements.empty() || header.elements.front().name != "vertex") {
-    throw fail("PLY elements before the vertices are not supported");
-  }
-  const std::vector<PlyProperty>& properties = header.elements.front().properties;
-  const std::size_t count = static_cast<std::size_t>(header.elements.front().count);
-  for (const PlyProperty& property : properties) {
-    if (property.count_size > 0) throw fail("PLY vertex list properties are not supported");
-  }
-  const auto found = find_xyz(properties);
-  if (!found) throw fail("PLY vertices need x, y and z");
-  const std::array<std::size_t, 3> axis = *found;
-  for (const std::size_t a : axis) {
-    if (!properties[a].floating) throw fail("PLY x, y, z must be float or double");
-  }
-  std::vector<Vec3> points(count);
-  const std::size_t data_start = header.data_start;
-  if (header.format == "ascii") {
-    std::istringstream body(bytes.substr(data_start));
-    for (Vec3& p : points) {
-      std::vector<double> values(properties.size());
-      for (double& v : values) {
-        if (!(body >> v)) throw fail("truncated PLY vertex data");
-      }
-      for (int k = 0; k < 3; ++k) p[k] = values[axis[static_cast<std::size_t>(k)]];
-    }
-    return points;
-  }
-  std::size_t stride = 0;
-  std::vector<std::size_t> offset;
-  for (const PlyProperty& property : properties) {
-    offset.push_back(stride);
-    stride += property.size;
-  }
-  if (bytes.size() < data_start + count * stride) throw fail("truncated PLY vertex data");
-  for (std::size_t i = 0; i < count; ++i) {
-    const char* vertex = bytes.data() + data_start + i * stride;
-    for (int k = 0; k < 3; ++k) {
-      const std::size_t a = axis[static_cast<std::size_t>(k)];
-      points[i][k] = properties[a].size == 4 ? load<float>(vertex + offset[a])
-                                             : load<double>(vertex + offset[a]);
-    }
-  }
-  return points;
+  return ply_points(read_ply_columns(path, bytes, header, ply_xyz_names(path, header)));
 }
 
 }  // namespace
