@@ -426,6 +426,20 @@ TEST(ReadMeshErrors, PlyFaceDataThatDoesNotFitItsHeader) {
                     "cannot read");
 }
 
+// Found by fuzz_ply_mesh in graspecmf's own PLY reader: an element of no properties declaring
+// about 10^18 items, which the reader walked through one by one; such an element holds no data.
+TEST(ReadMeshErrors, PlyElementWithoutPropertiesIsNoData) {
+  expect_read_error(
+      graspecmf::testing::fuzz_regression("ply_mesh", "element_without_properties_slow.ply"),
+      "cannot read");
+  ScratchDir dir;
+  write_file(dir / "tri.ply",
+             "ply\nformat ascii 1.0\nelement nothing 1000000000000000000\nelement vertex 3\n"
+             "property float x\nproperty float y\nproperty float z\nelement face 1\n"
+             "property list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(read_mesh(dir / "tri.ply").triangles.size(), 1U);
+}
+
 // Found by fuzz_ply_mesh: a vertical tab before end_header made assimp's PLY reader hang.
 TEST(ReadMeshErrors, PlyHeaderWithControlCharacters) {
   expect_read_error(graspecmf::testing::fuzz_regression("ply_mesh", "assimp_vertical_tab_hang.ply"),

@@ -1,6 +1,6 @@
 #pragma once
-// Mesh files: OBJ (tinyobjloader), STL binary/ASCII, PLY and glTF 2.0 (.glb/.gltf) (assimp) in;
-// OBJ and PLY out.
+// Mesh files: OBJ (tinyobjloader), PLY (graspecmf's reader), STL binary/ASCII and glTF 2.0
+// (.glb/.gltf) (assimp) in; OBJ and PLY out.
 // Read meshes are welded (vertices at identical positions merged) and validated.
 
 #include <filesystem>
@@ -32,19 +32,26 @@ namespace graspecmf::geometry {
 // sample mug, every cut in the vertex block and 71 % of the cuts in the face block are reported;
 // the others read as an open (not watertight) mesh.
 //
-// STL (binary and ASCII), PLY and glTF 2.0 (binary .glb, or .gltf with embedded or external
-// buffers): assimp, all meshes of the scene merged with node transforms applied; points and lines
-// are ignored. glTF coordinates are taken as they are (metres, +y up by the glTF convention; no
-// axis change). Debian's assimp stores positions as float, so PLY and STL
-// coordinates come back rounded to float precision (~6e-8 relative), even from a double PLY.
+// PLY (ascii, binary little- or big-endian): the vertices' scalar x, y, z (any PLY type, read
+// exactly) and the faces' vertex_indices (or vertex_index) lists; other elements and properties are
+// skipped. The declared elements must fit in the file before anything is allocated, every list must
+// fit in the bytes left, and nothing but whitespace may follow the last element.
+//
+// STL (binary and ASCII) and glTF 2.0 (binary .glb, or .gltf with embedded or external buffers):
+// assimp, all meshes of the scene merged with node transforms applied. glTF coordinates are taken
+// as they are (metres, +y up by the glTF convention; no axis change). Debian's assimp stores
+// positions as float, so STL and glTF coordinates come back rounded to float precision.
+//
+// For PLY, STL and glTF, faces of fewer than 3 corners (points, lines) are ignored and polygons are
+// split as a fan from their first corner; a polygon such a fan cannot split (concave) is refused.
 //
 // Then, for every format: vertices at bit-identical positions are merged (−0 = +0; the first
 // keeps its place, unused vertices are kept), triangles that repeat a vertex afterwards (zero
 // area) are dropped, and the result must pass validate_mesh.
 TriangleMesh read_mesh(const std::filesystem::path& path);
 // Writes .obj (text, %.17g) or .ply (binary little-endian, double x/y/z, uchar/uint face lists) by
-// extension, atomically, with full double precision; read_mesh(write_mesh(m)) == m exactly for OBJ
-// (and to float precision for PLY, see above) for a mesh without duplicate positions. Throws Error
+// extension, atomically, with full double precision; read_mesh(write_mesh(m)) == m exactly, for
+// both formats, for a mesh without duplicate positions. Throws Error
 // on another extension or if validate_mesh fails; then, as on any failed write, the target is left
 // untouched.
 void write_mesh(const TriangleMesh& mesh, const std::filesystem::path& path);

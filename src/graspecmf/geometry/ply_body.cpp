@@ -159,6 +159,8 @@ std::vector<PlyColumn> read_ply_columns(
   PlyReader in(path, bytes.substr(std::min(header.data_start, bytes.size())), header.format);
   for (std::size_t e = 0; e < header.elements.size(); ++e) {
     const PlyElement& element = header.elements[e];
+    // An element without properties holds no data, however many items it declares.
+    if (element.properties.empty()) continue;
     for (std::uint64_t item = 0; item < element.count; ++item) {
       for (std::size_t p = 0; p < element.properties.size(); ++p) {
         const PlyProperty& property = element.properties[p];

@@ -1,7 +1,7 @@
 #pragma once
 // Point clouds from files: .xyz/.txt (whitespace-separated rows, x y z first), .npy (float32 or
-// float64, shape (N, 3), C order, little endian) and .ply (ascii or binary_little_endian vertices
-// with float/double x, y, z; other vertex properties are skipped).
+// float64, shape (N, 3), C order, little endian) and .ply (ascii or binary of either byte order;
+// the scalar x, y, z of the vertex element, of any PLY type; everything else is skipped).
 
 #include <filesystem>
 #include <vector>
