@@ -3,6 +3,8 @@
 #include <benchmark/benchmark.h>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "graspecmf/core/isolated_call.hpp"
 #include "graspecmf/data/acronym_file.hpp"
@@ -19,6 +21,21 @@ void BM_ReadAcronymFile(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * 2000);  // grasps
 }
 BENCHMARK(BM_ReadAcronymFile)->Unit(benchmark::kMillisecond);
+
+// A dataset's worth of files (here the sample, 16 times) read in one batch: one child process reads
+// them all before the caller does.
+void BM_ReadAcronymFiles16(benchmark::State& state) {
+  const std::vector<fs::path> files(16, kSample);
+  for (auto _ : state) {
+    std::size_t grasps = 0;
+    graspecmf::data::read_acronym_files(
+        files, [&](std::size_t, graspecmf::data::AcronymGraspFile&& r) { grasps += r.size(); },
+        [](std::size_t, const std::string&) {});
+    benchmark::DoNotOptimize(grasps);
+  }
+  state.SetItemsProcessed(state.iterations() * 16 * 2000);
+}
+BENCHMARK(BM_ReadAcronymFiles16)->Unit(benchmark::kMillisecond);
 
 // The part of a read that isolates libhdf5: starting and reaping a child process that does nothing.
 void BM_IsolatedEmptyCall(benchmark::State& state) {

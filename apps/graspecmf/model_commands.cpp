@@ -254,11 +254,8 @@ std::vector<data::GraspObject> split_objects(const std::string& root, const std:
   const data::AcronymDataset dataset = data::AcronymDataset::open(root);
   const fs::path split_file = fs::path(root) / data::kSplitFileName;
   if (!fs::exists(split_file)) throw Error(split_file.string() + ": no split file");
-  std::vector<data::GraspObject> objects;
-  for (const data::ObjectEntry& entry :
-       dataset.select(data::read_split_file(split_file).part(split))) {
-    objects.push_back(data::AcronymDataset::load(entry));
-  }
+  const std::vector<data::GraspObject> objects =
+      data::AcronymDataset::load(dataset.select(data::read_split_file(split_file).part(split)));
   if (objects.empty()) throw Error(root + ": the " + split + " split is empty");
   return objects;
 }

@@ -35,5 +35,34 @@ TEST(IsolatedCall, CrashesAbortsAndHangsAreReportedNotSuffered) {
   EXPECT_EQ(hang.failure, "did not finish within 300 ms");
 }
 
+// Many calls share one child; each has its own time limit, and the outcome says which call the
+// child ended in.
+TEST(IsolatedCall, StepsShareOneChildAndReportWhereItEnded) {
+  const IsolatedOutcome slow = run_isolated_steps(
+      4, [](std::size_t) { std::this_thread::sleep_for(milliseconds(150)); }, milliseconds(400));
+  EXPECT_TRUE(slow.completed) << slow.failure;  // 600 ms in all, under 400 ms each
+  EXPECT_EQ(slow.finished, 4U);
+  const IsolatedOutcome crash = run_isolated_steps(
+      5,
+      [](std::size_t i) {
+        if (i == 2) std::raise(SIGSEGV);
+      },
+      milliseconds(10000));
+  EXPECT_FALSE(crash.completed);
+  EXPECT_EQ(crash.finished, 2U);
+  EXPECT_EQ(crash.failure.rfind("crashed (signal 11", 0), 0U) << crash.failure;
+  const IsolatedOutcome hang = run_isolated_steps(
+      3,
+      [](std::size_t i) {
+        if (i == 1) std::this_thread::sleep_for(std::chrono::seconds(30));
+      },
+      milliseconds(300));
+  EXPECT_EQ(hang.finished, 1U);
+  EXPECT_EQ(hang.failure, "did not finish within 300 ms");
+  EXPECT_TRUE(run_isolated_steps(
+                  0, [](std::size_t) { std::abort(); }, milliseconds(1000))
+                  .completed);
+}
+
 }  // namespace
 }  // namespace graspecmf

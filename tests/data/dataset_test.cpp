@@ -70,7 +70,7 @@ TEST_F(DatasetTest, ThresholdIsConfigurable) {
 
 TEST_F(DatasetTest, LoadsMetricMeshAndSuccessfulGrasps) {
   const AcronymDataset dataset = AcronymDataset::open(dir_.path());
-  const GraspObject mug = AcronymDataset::load(dataset.select({"a_mug"})[0]);
+  const GraspObject mug = AcronymDataset::load(dataset.select({"a_mug"}))[0];
   EXPECT_EQ(mug.grasps.size(), 1290u);
   EXPECT_EQ(mug.mesh.vertices.size(), 1167u);
   const geometry::BoundingBox box = geometry::bounding_box(mug.mesh);

@@ -85,5 +85,29 @@ TEST(FuzzRegressions, LibHdf5HangsAndCrashesAreErrors) {
       "hdf5_allocation_size_too_big.h5: ");
 }
 
+// A batch read calls back for every file in order: good files with their record, the damaged and
+// the missing one with their error, and the good file after a damaged one is still read.
+TEST(FuzzRegressions, BatchReadsGoOnPastDamagedFiles) {
+  const std::vector<std::filesystem::path> files = {
+      testing::sample_grasp_file(),
+      testing::fuzz_regression("acronym", "hdf5_allocation_size_too_big.h5"), "no-such-file.h5",
+      testing::sample_grasp_file()};
+  std::vector<std::string> calls;
+  read_acronym_files(
+      files,
+      [&](std::size_t i, AcronymGraspFile&& record) {
+        calls.push_back(std::to_string(i) + " " + std::to_string(record.size()));
+      },
+      [&](std::size_t i, const std::string& error) {
+        calls.push_back(std::to_string(i) + " " + error.substr(0, error.find(':')));
+      });
+  ASSERT_EQ(calls.size(), 4U);
+  EXPECT_EQ(calls[0], "0 2000");
+  EXPECT_EQ(calls[1], "1 " + files[1].string());
+  EXPECT_EQ(calls[2].rfind("2 ", 0), 0U) << calls[2];
+  EXPECT_NE(calls[2].find("no-such-file.h5"), std::string::npos) << calls[2];
+  EXPECT_EQ(calls[3], "3 2000");
+}
+
 }  // namespace
 }  // namespace graspecmf::data

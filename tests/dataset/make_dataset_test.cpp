@@ -63,7 +63,7 @@ TEST(MakeDataset, WritesAnAcronymFolderThatTheDatasetLoaderReads) {
     EXPECT_EQ(record.qualities->motion_shaking_linear.size(), record.size());
     ASSERT_TRUE(record.object.mass.has_value());
     EXPECT_GT(*record.object.mass, 0.0);
-    EXPECT_EQ(data::AcronymDataset::load(entry).grasps.size(), entry.num_successful);
+    EXPECT_EQ(data::AcronymDataset::load({entry})[0].grasps.size(), entry.num_successful);
   }
   const nlohmann::json manifest = nlohmann::json::parse(read_file(dir / "out/manifest.json"));
   EXPECT_EQ(manifest["options"]["candidates"]["num_grasps"], 6);

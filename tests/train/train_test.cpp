@@ -465,7 +465,7 @@ TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
   torch::manual_seed(1);
   const ScratchDir dir;
   const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
-  const data::GraspObject box = data::AcronymDataset::load(dataset.objects()[0]);
+  const data::GraspObject box = data::AcronymDataset::load({dataset.objects()[0]})[0];
   const TrainConfig config = tiny_config();
   const Generator model = make_generator(config);
   const ObjectEvaluation e =
@@ -486,9 +486,7 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   const ScratchDir dir;
   const fs::path root = tiny_dataset(dir);
   const data::AcronymDataset dataset = data::AcronymDataset::open(root);
-  std::vector<data::GraspObject> boxes;
-  for (const data::ObjectEntry& entry : dataset.objects())
-    boxes.push_back(data::AcronymDataset::load(entry));
+  const std::vector<data::GraspObject> boxes = data::AcronymDataset::load(dataset.objects());
   ASSERT_EQ(boxes.size(), 3u);
   // The 6 cm box's nearest shape among the 4 and 5 cm boxes is the 5 cm one.
   const std::vector<data::GraspObject> smaller = {boxes[0], boxes[1]};

@@ -23,7 +23,8 @@ namespace {
 constexpr int kCompleted = 0;
 constexpr int kOtherException = 3;
 
-[[noreturn]] void run_child(const std::function<void()>& call) {
+[[noreturn]] void run_child(std::size_t count, const std::function<void(std::size_t)>& step,
+                            int progress) {
   // The child dies plainly: the parent's crash handlers (a sanitizer's or libFuzzer's, which would
   // report the child's crash as the parent's) are taken away first.
   for (const int signal : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(signal, SIG_DFL);
@@ -33,15 +34,18 @@ constexpr int kOtherException = 3;
     ::dup2(null, STDOUT_FILENO);
     ::dup2(null, STDERR_FILENO);
   }
-  int status = kCompleted;
-  try {
-    call();
-  } catch (const Error&) {
-    // A clear refusal: the caller's own call will throw it again.
-  } catch (...) {
-    status = kOtherException;
+  for (std::size_t i = 0; i < count; ++i) {
+    try {
+      step(i);
+    } catch (const Error&) {
+      // A clear refusal: the caller's own call will throw it again.
+    } catch (...) {
+      ::_exit(kOtherException);
+    }
+    const char done = 1;  // one byte per finished call tells the parent to restart its clock
+    if (::write(progress, &done, 1) != 1) ::_exit(kOtherException);
   }
-  ::_exit(status);  // no atexit handlers or static destructors of the parent's state
+  ::_exit(kCompleted);  // no atexit handlers or static destructors of the parent's state
 }
 
 std::string describe(int status) {
@@ -57,9 +61,11 @@ std::string describe(int status) {
 
 }  // namespace
 
-IsolatedOutcome run_isolated(const std::function<void()>& call, std::chrono::milliseconds timeout) {
-  // The child holds the write end of a pipe until it exits, so the parent wakes the moment it
-  // does (poll sees the hang-up) instead of polling waitpid on a timer.
+IsolatedOutcome run_isolated_steps(std::size_t count, const std::function<void(std::size_t)>& step,
+                                   std::chrono::milliseconds step_timeout) {
+  // The child writes a byte to a pipe after each call and holds the write end until it exits, so
+  // the parent wakes the moment a call finishes or the child ends (poll sees the hang-up) instead
+  // of polling waitpid on a timer.
   int ends[2];
   if (::pipe(ends) != 0) {
     throw Error(std::string("cannot start a child process (") + std::strerror(errno) + ")");
@@ -73,33 +79,49 @@ IsolatedOutcome run_isolated(const std::function<void()>& call, std::chrono::mil
   }
   if (child == 0) {
     ::close(ends[0]);
-    run_child(call);
+    run_child(count, step, ends[1]);
   }
   ::close(ends[1]);
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
-  bool finished = false;
-  while (!finished) {
+  IsolatedOutcome outcome;
+  auto deadline = std::chrono::steady_clock::now() + step_timeout;
+  bool ended = false;
+  while (!ended) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
         deadline - std::chrono::steady_clock::now());
     if (left.count() <= 0) break;
-    pollfd hang_up{ends[0], POLLIN, 0};
-    const int ready =
-        ::poll(&hang_up, 1, static_cast<int>(std::min<long long>(left.count(), 60000)));
-    finished = ready > 0;
+    pollfd readable{ends[0], POLLIN, 0};
+    if (::poll(&readable, 1, static_cast<int>(std::min<long long>(left.count(), 60000))) <= 0) {
+      continue;
+    }
+    char bytes[256];
+    const ssize_t n = ::read(ends[0], bytes, sizeof bytes);
+    if (n > 0) {
+      outcome.finished += static_cast<std::size_t>(n);
+      deadline = std::chrono::steady_clock::now() + step_timeout;
+    }
+    ended = n == 0 || (n < 0 && errno != EINTR);
   }
   ::close(ends[0]);
   int status = 0;
-  if (!finished) {
+  if (!ended) {
     ::kill(child, SIGKILL);
     ::waitpid(child, &status, 0);
-    const long long ms = timeout.count();
-    return {false, "did not finish within " + (ms % 1000 == 0 ? std::to_string(ms / 1000) + " s"
-                                                              : std::to_string(ms) + " ms")};
+    const long long ms = step_timeout.count();
+    outcome.failure = "did not finish within " + (ms % 1000 == 0 ? std::to_string(ms / 1000) + " s"
+                                                                 : std::to_string(ms) + " ms");
+    return outcome;
   }
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
-  if (WIFEXITED(status) && WEXITSTATUS(status) == kCompleted) return {true, {}};
-  return {false, describe(status)};
+  outcome.completed =
+      WIFEXITED(status) && WEXITSTATUS(status) == kCompleted && outcome.finished == count;
+  if (!outcome.completed) outcome.failure = describe(status);
+  return outcome;
+}
+
+IsolatedOutcome run_isolated(const std::function<void()>& call, std::chrono::milliseconds timeout) {
+  return run_isolated_steps(
+      1, [&](std::size_t) { call(); }, timeout);
 }
 
 }  // namespace graspecmf

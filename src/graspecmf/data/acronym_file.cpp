@@ -221,22 +221,66 @@ AcronymGraspFile read_acronym_file_here(const fs::path& path) {
   return record;
 }
 
+// The default time limit of a child's read of one of paths: 60 s plus 1 s per 10 MB of the
+// largest.
+std::chrono::seconds read_limit(const std::vector<fs::path>& paths) {
+  std::uintmax_t largest = 0;
+  for (const fs::path& path : paths) {
+    std::error_code ec;
+    const std::uintmax_t bytes = fs::file_size(path, ec);
+    if (!ec) largest = std::max(largest, bytes);
+  }
+  return std::chrono::seconds(60 + largest / 10'000'000);
+}
+
+// Reads paths in child processes; entry i is empty when libhdf5 returned (a record or an Error)
+// on paths[i], else the Error message for the file it crashed or hung on.
+std::vector<std::string> library_failures(const std::vector<fs::path>& paths,
+                                          std::chrono::seconds limit) {
+  std::vector<std::string> failures(paths.size());
+  for (std::size_t start = 0; start < paths.size();) {
+    const IsolatedOutcome probe = run_isolated_steps(
+        paths.size() - start, [&](std::size_t i) { read_acronym_file_here(paths[start + i]); },
+        limit);
+    if (probe.completed) break;
+    const std::size_t bad = start + probe.finished;
+    failures[bad] = paths[bad].string() + ": damaged HDF5 file (the HDF5 library " + probe.failure +
+                    " reading it)";
+    start = bad + 1;
+  }
+  return failures;
+}
+
 }  // namespace
 
 AcronymGraspFile read_acronym_file(const fs::path& path) {
-  std::error_code ec;
-  const std::uintmax_t bytes = fs::file_size(path, ec);
-  return read_acronym_file(path, std::chrono::seconds(60 + (ec ? 0 : bytes / 10'000'000)));
+  return read_acronym_file(path, read_limit({path}));
 }
 
 AcronymGraspFile read_acronym_file(const fs::path& path, std::chrono::seconds limit) {
-  // A file the child read, or refused with an Error, is then read here.
-  const IsolatedOutcome probe = run_isolated([&] { read_acronym_file_here(path); }, limit);
-  if (!probe.completed) {
-    throw Error(path.string() + ": damaged HDF5 file (the HDF5 library " + probe.failure +
-                " reading it)");
-  }
+  const std::vector<std::string> failure = library_failures({path}, limit);
+  if (!failure[0].empty()) throw Error(failure[0]);
   return read_acronym_file_here(path);
+}
+
+void read_acronym_files(const std::vector<fs::path>& paths,
+                        const std::function<void(std::size_t, AcronymGraspFile&&)>& use,
+                        const std::function<void(std::size_t, const std::string&)>& refuse) {
+  const std::vector<std::string> failures = library_failures(paths, read_limit(paths));
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    if (!failures[i].empty()) {
+      refuse(i, failures[i]);
+      continue;
+    }
+    std::optional<AcronymGraspFile> record;
+    try {
+      record = read_acronym_file_here(paths[i]);
+    } catch (const Error& e) {
+      refuse(i, e.what());
+      continue;
+    }
+    use(i, std::move(*record));
+  }
 }
 
 void write_acronym_file(const AcronymGraspFile& record, const fs::path& path) {

@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -54,6 +55,14 @@ struct AcronymGraspFile {
 // `limit` (by default 60 s plus 1 s per 10 MB).
 AcronymGraspFile read_acronym_file(const std::filesystem::path& path);
 AcronymGraspFile read_acronym_file(const std::filesystem::path& path, std::chrono::seconds limit);
+
+// Reads each of paths as read_acronym_file does, calling use(i, record) for each file read and
+// refuse(i, message) for each that gives an Error, in order. All files are first read in one child
+// process (one more after each file libhdf5 crashed or hung on), so a dataset costs one fork, not
+// one per file.
+void read_acronym_files(const std::vector<std::filesystem::path>& paths,
+                        const std::function<void(std::size_t, AcronymGraspFile&&)>& use,
+                        const std::function<void(std::size_t, const std::string&)>& refuse);
 
 // Writes the record in ACRONYM's layout, atomically (a failure leaves no file and keeps any old
 // one). Throws Error if array lengths disagree or a number is not finite.

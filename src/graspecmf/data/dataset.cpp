@@ -43,29 +43,32 @@ AcronymDataset AcronymDataset::open(const fs::path& root, const DatasetOptions& 
   const fs::path mesh_root = options.mesh_root.empty() ? root : options.mesh_root;
 
   AcronymDataset dataset;
-  for (const fs::path& file : files) {
-    const std::string name = file.stem().string();
-    try {
-      const AcronymGraspFile record = read_acronym_file(file);
-      ObjectEntry entry{name,
-                        file,
-                        resolve_mesh_path(mesh_root, record.object.file),
-                        record.object.scale,
-                        record.size(),
-                        record.num_successful()};
-      if (entry.num_successful < options.min_successful) {
-        dataset.skipped_.push_back({name, std::to_string(entry.num_successful) +
-                                              " successful grasps (fewer than " +
-                                              std::to_string(options.min_successful) + ")"});
-      } else if (!fs::is_regular_file(entry.mesh_file, ec)) {
-        dataset.skipped_.push_back({name, "mesh not found: " + entry.mesh_file.string()});
-      } else {
-        dataset.objects_.push_back(std::move(entry));
-      }
-    } catch (const Error& e) {
-      dataset.skipped_.push_back({name, e.what()});
-    }
-  }
+  read_acronym_files(
+      files,
+      [&](std::size_t i, AcronymGraspFile&& record) {
+        const std::string name = files[i].stem().string();
+        fs::path mesh;
+        try {
+          mesh = resolve_mesh_path(mesh_root, record.object.file);
+        } catch (const Error& e) {
+          dataset.skipped_.push_back({name, e.what()});
+          return;
+        }
+        ObjectEntry entry{
+            name, files[i], mesh, record.object.scale, record.size(), record.num_successful()};
+        if (entry.num_successful < options.min_successful) {
+          dataset.skipped_.push_back({name, std::to_string(entry.num_successful) +
+                                                " successful grasps (fewer than " +
+                                                std::to_string(options.min_successful) + ")"});
+        } else if (!fs::is_regular_file(entry.mesh_file, ec)) {
+          dataset.skipped_.push_back({name, "mesh not found: " + entry.mesh_file.string()});
+        } else {
+          dataset.objects_.push_back(std::move(entry));
+        }
+      },
+      [&](std::size_t i, const std::string& error) {
+        dataset.skipped_.push_back({files[i].stem().string(), error});
+      });
   if (dataset.objects_.empty()) {
     throw Error(root.string() + ": no usable object among " + std::to_string(files.size()) +
                 " grasp files" +
@@ -98,11 +101,22 @@ std::vector<ObjectEntry> AcronymDataset::select(const std::vector<std::string>& 
   return selected;
 }
 
-GraspObject AcronymDataset::load(const ObjectEntry& entry) {
-  const AcronymGraspFile record = read_acronym_file(entry.grasp_file);
-  require_panda_gripper(record, entry.grasp_file);
-  return {entry.name, geometry::scaled(geometry::read_mesh(entry.mesh_file), record.object.scale),
-          record.successful_grasps(), record.object};
+std::vector<GraspObject> AcronymDataset::load(const std::vector<ObjectEntry>& entries) {
+  std::vector<fs::path> files;
+  for (const ObjectEntry& entry : entries) files.push_back(entry.grasp_file);
+  std::vector<GraspObject> objects;
+  read_acronym_files(
+      files,
+      [&](std::size_t i, AcronymGraspFile&& record) {
+        const ObjectEntry& entry = entries[i];
+        require_panda_gripper(record, entry.grasp_file);
+        objects.push_back(
+            {entry.name,
+             geometry::scaled(geometry::read_mesh(entry.mesh_file), record.object.scale),
+             record.successful_grasps(), record.object});
+      },
+      [](std::size_t, const std::string& error) { throw Error(error); });
+  return objects;
 }
 
 }  // namespace graspecmf::data

@@ -64,8 +64,9 @@ class AcronymDataset {
   std::vector<std::string> names() const;
   // The entries with these names, in this order; throws Error for a name that is not usable.
   std::vector<ObjectEntry> select(const std::vector<std::string>& names) const;
-  // Reads the object's mesh (scaled to metres) and its successful grasps.
-  static GraspObject load(const ObjectEntry& entry);
+  // Reads the objects' meshes (scaled to metres) and successful grasps, in order; throws Error for
+  // the first that cannot be read.
+  static std::vector<GraspObject> load(const std::vector<ObjectEntry>& entries);
 
  private:
   std::vector<ObjectEntry> objects_;

@@ -58,12 +58,8 @@ std::vector<data::GraspObject> load_objects(const data::AcronymDataset& dataset,
   for (const std::string& name : names) {
     if (std::find(usable.begin(), usable.end(), name) != usable.end()) kept.push_back(name);
   }
-  std::vector<data::GraspObject> objects;
-  for (const data::ObjectEntry& entry : dataset.select(kept)) {
-    if (objects.size() == limit) break;
-    objects.push_back(data::AcronymDataset::load(entry));
-  }
-  return objects;
+  if (kept.size() > limit) kept.resize(limit);
+  return data::AcronymDataset::load(dataset.select(kept));
 }
 
 // One step's samples as tensors on device.
