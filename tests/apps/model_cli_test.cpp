@@ -29,7 +29,7 @@ using graspecmf::testing::write_file;
 // A model small enough to train in a second.
 constexpr const char* kTinyConfig = R"({
   "model": {"encoder": {"widths": [4, 4, 4, 4, 4], "k": 4, "out_channels": 6, "points": 32},
-            "field": {"hidden_widths": [8, 8]}},
+            "field": {"hidden_widths": [8, 8]}, "graspnet": {"centroids": 8}},
   "data": {"objects_per_step": 2, "grasps_per_object": 8},
   "steps": 4, "log_every": 2, "checkpoint_every": 2, "validate_every": 0,
   "validation_grasps": 4, "sampling": {"steps": 2}
@@ -39,7 +39,7 @@ constexpr const char* kTinyConfig = R"({
 TEST(CliModel, EveryModelTypeTrainsSamplesAndEvaluates) {
   ScratchDir dir;
   const fs::path data = graspecmf::testing::tiny_dataset(dir);
-  for (const std::string type : {"graspecmf", "flow_dgcnn"}) {
+  for (const std::string type : {"graspecmf", "flow_dgcnn", "graspnet_vae", "graspnet_gan"}) {
     nlohmann::json config = nlohmann::json::parse(kTinyConfig);
     config["model"]["type"] = type;
     write_file(dir / (type + ".json"), config.dump());

@@ -60,6 +60,17 @@ lie::Mat3 to_mat3(const at::Tensor& T) {
   return M;
 }
 
+// The unit quaternion (cos θ/2, sin θ/2 · u) is the rotation Exp(θ u); −q is the same rotation.
+TEST(FlowSo3, QuaternionsGiveTheirRotations) {
+  auto gen = make_generator(7);
+  const auto w = at::randn({16, 3}, gen, kF64);
+  const auto angle = w.norm(2, {-1}, true);
+  const auto q = at::cat({(angle / 2).cos(), (angle / 2).sin() * w / angle}, -1);
+  EXPECT_LT(max_abs(quaternion_to_matrix(q) - so3_exp(w)), 1e-12);
+  EXPECT_LT(max_abs(quaternion_to_matrix(-q) - so3_exp(w)), 1e-12);
+  EXPECT_LT(rotation_error(quaternion_to_matrix(q)), 1e-12);
+}
+
 TEST(FlowSo3, HatVeeAndBracket) {
   auto gen = make_generator(1);
   const auto w = at::randn({4, 5, 3}, gen, kF64);

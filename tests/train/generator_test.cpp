@@ -145,5 +145,35 @@ TEST(GeneratorEquivariance, OnlyGraspEcmfIsEquivariant) {
   EXPECT_GT(equivariance_error("flow_dgcnn"), 1e-2);  // the check can fail
 }
 
+// 6-DOF GraspNet at the reference's sizes: the decoder (xyz + latent per point) and three heads;
+// the VAE adds the encoder (xyz + 4 × 4 grasp per point) and the μ and log-variance heads. The
+// counts follow from the layer shapes (docs/method.md): 3.87 M and 1.93 M.
+TEST(GraspNetGenerator, ParameterCountsFollowTheReference) {
+  const auto count = [](const std::string& type) {
+    TrainConfig config;
+    config.model.type = type;
+    int64_t n = 0;
+    for (const at::Tensor& p : make_generator(config)->parameters()) n += p.numel();
+    return n;
+  };
+  EXPECT_EQ(count("graspnet_gan"), 1926016 + 8200);
+  EXPECT_EQ(count("graspnet_vae"), 1926016 + 8200 + 1926912 + 4100);
+}
+
+// A drawn grasp depends on its cloud and its latent: grasp i reads cloud i mod M, so drawing from
+// the same cloud twice gives the draws of a one-cloud condition.
+TEST(GraspNetGenerator, GraspICyclesThroughTheClouds) {
+  torch::manual_seed(1);
+  const Generator model = make_generator(tiny_config("graspnet_gan"));
+  model->eval();
+  const at::Tensor two = clouds(2);
+  at::Generator a = flow::make_generator(4), b = flow::make_generator(4);
+  const flow::PoseBatch both = model->draw(model->condition(two), 4, SamplingSettings{}, a);
+  const flow::PoseBatch first =
+      model->draw(model->condition(two.slice(0, 0, 1)), 4, SamplingSettings{}, b);
+  for (const int64_t i : {0, 2}) EXPECT_TRUE(torch::allclose(both.p[i], first.p[i])) << i;
+  for (const int64_t i : {1, 3}) EXPECT_FALSE(torch::allclose(both.p[i], first.p[i])) << i;
+}
+
 }  // namespace
 }  // namespace graspecmf::models

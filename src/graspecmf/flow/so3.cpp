@@ -117,4 +117,18 @@ at::Tensor lie_bracket(const at::Tensor& a, const at::Tensor& b) {
   return at::linalg_cross(a, b, -1);
 }
 
+at::Tensor quaternion_to_matrix(const at::Tensor& q) {
+  const auto w = q.select(-1, 0);
+  const auto x = q.select(-1, 1);
+  const auto y = q.select(-1, 2);
+  const auto z = q.select(-1, 3);
+  const auto row0 =
+      at::stack({1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)}, -1);
+  const auto row1 =
+      at::stack({2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)}, -1);
+  const auto row2 =
+      at::stack({2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)}, -1);
+  return at::stack({row0, row1, row2}, -2);
+}
+
 }  // namespace graspecmf::flow

@@ -26,4 +26,8 @@ at::Tensor so3_log(const at::Tensor& R);
 // vee(hat(a) hat(b) − hat(b) hat(a)).
 at::Tensor lie_bracket(const at::Tensor& a, const at::Tensor& b);
 
+// [..., 4] unit quaternions (w, x, y, z) → [..., 3, 3] rotation matrices (differentiable; q and −q
+// give the same matrix).
+at::Tensor quaternion_to_matrix(const at::Tensor& q);
+
 }  // namespace graspecmf::flow

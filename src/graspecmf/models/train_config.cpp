@@ -88,8 +88,10 @@ void validate(const TrainConfig& c) {
            std::all_of(widths.begin(), widths.end(),
                        [](int64_t w) { return w > 0 && w <= kMaxWidth; });
   };
-  for (const double value : {c.model.encoder.slope, c.model.field.slope, c.data.position_scale,
-                             c.learning_rate, c.weight_decay, c.prior_position_std}) {
+  const GraspNetOptions& g = c.model.graspnet;
+  for (const double value :
+       {c.model.encoder.slope, c.model.field.slope, c.data.position_scale, c.learning_rate,
+        c.weight_decay, c.prior_position_std, g.radius, g.kl_weight, g.confidence_weight}) {
     // JSON has no NaN, but 1e999 parses as infinity.
     if (!std::isfinite(value)) throw Error("train config: every number must be finite");
   }
@@ -103,6 +105,15 @@ void validate(const TrainConfig& c) {
   if (e.k < 1 || e.k > 256 || e.out_channels < 1 || e.out_channels > kMaxWidth || e.points < e.k ||
       e.points > 100000) {
     throw Error("train config: need 1 ≤ k ≤ 256, 1 ≤ out_channels ≤ 4096 and k ≤ points ≤ 100000");
+  }
+  if (g.latent_size < 1 || g.latent_size > 64 || !(g.radius > 0) || g.centroids < 4 ||
+      !(g.kl_weight >= 0) || !(g.confidence_weight >= 0)) {
+    throw Error(
+        "train config: model.graspnet needs 1 ≤ latent_size ≤ 64, radius > 0, "
+        "centroids ≥ 4 and non-negative weights");
+  }
+  if (c.model.type.rfind("graspnet_", 0) == 0 && g.centroids > e.points) {
+    throw Error("train config: model.graspnet.centroids must not exceed encoder.points");
   }
   if (!widths_in_range(c.model.field.hidden_widths)) {
     throw Error("train config: field hidden_widths must be 1 to 64 layers of 1 to 4096 channels");
@@ -154,6 +165,7 @@ void validate(const TrainConfig& c) {
 
 json to_json(const TrainConfig& c) {
   const nn::EncoderOptions& e = c.model.encoder;
+  const GraspNetOptions& g = c.model.graspnet;
   return {{"model",
            {{"type", c.model.type},
             {"encoder",
@@ -165,7 +177,13 @@ json to_json(const TrainConfig& c) {
             {"field",
              {{"hidden_widths", c.model.field.hidden_widths},
               {"slope", c.model.field.slope},
-              {"z_every_layer", c.model.field.z_every_layer}}}}},
+              {"z_every_layer", c.model.field.z_every_layer}}},
+            {"graspnet",
+             {{"latent_size", g.latent_size},
+              {"radius", g.radius},
+              {"centroids", g.centroids},
+              {"kl_weight", g.kl_weight},
+              {"confidence_weight", g.confidence_weight}}}}},
           {"data",
            {{"objects_per_step", c.data.objects_per_step},
             {"grasps_per_object", c.data.grasps_per_object},
@@ -201,7 +219,7 @@ TrainConfig train_config_from_json(const json& j) {
        "");
   if (j.contains("model")) {
     const json& m = j["model"];
-    only(m, {"type", "encoder", "field"}, "model.");
+    only(m, {"type", "encoder", "field", "graspnet"}, "model.");
     read(m, "type", c.model.type, "model.");
     if (m.contains("encoder")) {
       const json& e = m["encoder"];
@@ -218,6 +236,17 @@ TrainConfig train_config_from_json(const json& j) {
       read(f, "hidden_widths", c.model.field.hidden_widths, "model.field.");
       read(f, "slope", c.model.field.slope, "model.field.");
       read(f, "z_every_layer", c.model.field.z_every_layer, "model.field.");
+    }
+    if (m.contains("graspnet")) {
+      const json& g = m["graspnet"];
+      GraspNetOptions& o = c.model.graspnet;
+      only(g, {"latent_size", "radius", "centroids", "kl_weight", "confidence_weight"},
+           "model.graspnet.");
+      read(g, "latent_size", o.latent_size, "model.graspnet.");
+      read(g, "radius", o.radius, "model.graspnet.");
+      read(g, "centroids", o.centroids, "model.graspnet.");
+      read(g, "kl_weight", o.kl_weight, "model.graspnet.");
+      read(g, "confidence_weight", o.confidence_weight, "model.graspnet.");
     }
   }
   if (j.contains("data")) {

@@ -22,13 +22,24 @@ struct SamplingSettings {
 };
 
 // The generators make_generator builds (docs/config.md, `model.type`).
-inline const std::array<std::string, 2> kModelTypes = {"graspecmf", "flow_dgcnn"};
+inline const std::array<std::string, 4> kModelTypes = {"graspecmf", "flow_dgcnn", "graspnet_vae",
+                                                       "graspnet_gan"};
+
+// The settings of 6-DOF GraspNet's generators (model.type graspnet_vae and graspnet_gan).
+struct GraspNetOptions {
+  std::int64_t latent_size = 2;
+  double radius = 0.02;          // the first ball query's radius, metres (× position_scale inside)
+  std::int64_t centroids = 128;  // the first set abstraction's centroids (≤ encoder.points)
+  double kl_weight = 0.01;       // β of the VAE loss
+  double confidence_weight = 1.0;  // w_c of both losses
+};
 
 // Which generator to build and its network settings (docs/config.md, `model`).
 struct ModelConfig {
   std::string type = "graspecmf";  // the generator (make_generator)
   nn::EncoderOptions encoder;      // its points also set the cloud size of every model
   nn::VectorFieldOptions field;    // field.z_channels follows encoder.out_channels
+  GraspNetOptions graspnet;
 };
 
 struct TrainConfig {
