@@ -83,16 +83,18 @@ BENCHMARK(BM_SampleGrasps)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// One flow-matching step, forward and backward, of 4 objects × 300 grasps.
-void BM_TrainingStep(benchmark::State& state) {
-  at::set_num_threads(static_cast<int>(state.range(0)));
+// Times training steps (loss, backward, Adam) of a fresh generator of the config's type on random
+// clouds of 1024 points, 4 objects × grasps_per_object grasps, with `threads` LibTorch threads.
+void time_training_steps(benchmark::State& state, const TrainConfig& config,
+                         int64_t grasps_per_object, int64_t threads) {
+  at::set_num_threads(static_cast<int>(threads));
   torch::manual_seed(0);
-  const graspecmf::models::Generator model = graspecmf::models::make_generator(TrainConfig{});
+  const graspecmf::models::Generator model = graspecmf::models::make_generator(config);
   torch::optim::Adam optimizer(model->parameters(), torch::optim::AdamOptions(1e-4));
   at::Generator generator = graspecmf::flow::make_generator(1);
-  const graspecmf::models::TrainingBatch batch{torch::randn({4, 1024, 3}),
-                                               torch::arange(4).repeat_interleave(300),
-                                               graspecmf::flow::sample_prior(1200, 1.0, generator)};
+  const graspecmf::models::TrainingBatch batch{
+      torch::randn({4, 1024, 3}), torch::arange(4).repeat_interleave(grasps_per_object),
+      graspecmf::flow::sample_prior(4 * grasps_per_object, 1.0, generator)};
   for (auto _ : state) {
     const at::Tensor loss = model->loss(batch, generator);
     optimizer.zero_grad();
@@ -100,27 +102,19 @@ void BM_TrainingStep(benchmark::State& state) {
     optimizer.step();
   }
 }
+
+// One flow-matching step of the paper-sized model, 4 objects × 300 grasps: arg = threads.
+void BM_TrainingStep(benchmark::State& state) {
+  time_training_steps(state, TrainConfig{}, 300, state.range(0));
+}
 BENCHMARK(BM_TrainingStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
-// One step of 6-DOF GraspNet at the reference's sizes (1024 points, 64 grasps: 4 objects × 16),
-// forward and backward: args = variant (0 VAE, 1 GAN), threads.
+// One step of 6-DOF GraspNet at the reference's sizes (1024 points, 64 grasps: 4 objects × 16):
+// args = variant (0 VAE, 1 GAN), threads.
 void BM_GraspNetTrainingStep(benchmark::State& state) {
-  at::set_num_threads(static_cast<int>(state.range(1)));
-  torch::manual_seed(0);
   TrainConfig config;
   config.model.type = state.range(0) == 0 ? "graspnet_vae" : "graspnet_gan";
-  const graspecmf::models::Generator model = graspecmf::models::make_generator(config);
-  torch::optim::Adam optimizer(model->parameters(), torch::optim::AdamOptions(1e-4));
-  at::Generator generator = graspecmf::flow::make_generator(1);
-  const graspecmf::models::TrainingBatch batch{torch::randn({4, 1024, 3}),
-                                               torch::arange(4).repeat_interleave(16),
-                                               graspecmf::flow::sample_prior(64, 1.0, generator)};
-  for (auto _ : state) {
-    const at::Tensor loss = model->loss(batch, generator);
-    optimizer.zero_grad();
-    loss.backward();
-    optimizer.step();
-  }
+  time_training_steps(state, config, 16, state.range(1));
 }
 BENCHMARK(BM_GraspNetTrainingStep)
     ->ArgsProduct({{0, 1}, {2}})
