@@ -1,4 +1,4 @@
-// One battery for every generator type (models::kModelTypes): shapes, seeded sampling, a falling
+// One battery for every generator type (models::model_types()): shapes, seeded sampling, a falling
 // loss, bit-for-bit resume and loading for sampling; and equivariance, which only GraspECMF has.
 #include "graspecmf/models/generator.hpp"
 
@@ -112,7 +112,7 @@ TEST_P(GeneratorBattery, AnInterruptedRunResumesBitForBit) {
   EXPECT_EQ(load_trained_model(dir / "whole").config.model.type, GetParam());
 }
 
-INSTANTIATE_TEST_SUITE_P(AllModelTypes, GeneratorBattery, ::testing::ValuesIn(kModelTypes),
+INSTANTIATE_TEST_SUITE_P(AllModelTypes, GeneratorBattery, ::testing::ValuesIn(model_types()),
                          [](const ::testing::TestParamInfo<std::string>& p) { return p.param; });
 
 // The relative change of the flow's endpoints when the cloud and the starting poses are rotated,

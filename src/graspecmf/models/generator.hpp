@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "graspecmf/flow/pose_batch.hpp"
@@ -47,6 +48,9 @@ class GeneratorImpl : public torch::nn::Module {
   c10::Device device() const;
 };
 using Generator = std::shared_ptr<GeneratorImpl>;
+
+// The model types make_generator builds (docs/config.md, `model.type`), in the docs' order.
+const std::vector<std::string>& model_types();
 
 // A fresh generator with the config's model type and settings, its parameters drawn from
 // torch's global generator (seed it with torch::manual_seed). Throws Error for an unknown type.

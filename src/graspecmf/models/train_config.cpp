@@ -10,6 +10,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/json_file.hpp"
 #include "graspecmf/flow/sampler.hpp"
+#include "graspecmf/models/generator.hpp"
 
 namespace graspecmf::models {
 using nlohmann::json;
@@ -75,9 +76,10 @@ double learning_rate_at(const TrainConfig& c, std::int64_t step) {
 }
 
 void validate(const TrainConfig& c) {
-  if (std::find(kModelTypes.begin(), kModelTypes.end(), c.model.type) == kModelTypes.end()) {
+  const std::vector<std::string>& types = model_types();
+  if (std::find(types.begin(), types.end(), c.model.type) == types.end()) {
     std::string known;
-    for (const std::string& type : kModelTypes) known += (known.empty() ? "" : ", ") + type;
+    for (const std::string& type : types) known += (known.empty() ? "" : ", ") + type;
     throw Error("train config: unknown model.type " + c.model.type + " (known: " + known + ")");
   }
   if (c.model.type != "graspecmf" && c.model.field.z_every_layer) {

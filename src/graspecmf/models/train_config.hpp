@@ -2,7 +2,6 @@
 // Every setting of a training run (docs/config.md lists every key), read from and written to JSON;
 // the run folder keeps a copy, and a resumed run must use the same one.
 
-#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
@@ -20,10 +19,6 @@ struct SamplingSettings {
   double guidance = 2.0;  // classifier-free guidance weight w
   int clouds = 1;         // clouds of the object encoded and their z averaged (1 in the paper)
 };
-
-// The generators make_generator builds (docs/config.md, `model.type`).
-inline const std::array<std::string, 4> kModelTypes = {"graspecmf", "flow_dgcnn", "graspnet_vae",
-                                                       "graspnet_gan"};
 
 // The settings of 6-DOF GraspNet's generators (model.type graspnet_vae and graspnet_gan).
 struct GraspNetOptions {
