@@ -67,5 +67,23 @@ TEST_F(Se3DifNetworks, TheEnergyHasSecondDerivativesInThePose) {
   EXPECT_TRUE(torch::isfinite(second).all().item<bool>());
 }
 
+// Dropout masks come from the generator passed in, so a seed repeats them; without a generator, or
+// in eval mode, there is no dropout.
+TEST_F(Se3DifNetworks, DropoutMasksComeFromTheGivenGenerator) {
+  Se3DifEnergy energy(8.0);
+  at::Generator poses = flow::make_generator(6);
+  const flow::PoseBatch x = flow::sample_prior(4, 1.0, poses);
+  const auto t = torch::full({4}, 0.5);
+  const auto z = torch::randn({4, 132});
+  at::Generator a = flow::make_generator(1), b = flow::make_generator(1),
+                c = flow::make_generator(2);
+  const auto ea = energy->forward(x, t, z, &a);
+  EXPECT_TRUE(torch::equal(ea, energy->forward(x, t, z, &b)));
+  EXPECT_FALSE(torch::equal(ea, energy->forward(x, t, z, &c)));
+  const auto plain = energy->forward(x, t, z);
+  energy->eval();
+  EXPECT_TRUE(torch::equal(plain, energy->forward(x, t, z, &c)));
+}
+
 }  // namespace
 }  // namespace graspecmf::nn

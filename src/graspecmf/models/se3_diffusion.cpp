@@ -42,6 +42,8 @@ at::Tensor denoising_score_matching_loss(const PoseEnergy& energy, const flow::P
   const auto noise = at::randn({g, 6}, generator, cpu).to(options.device());
   const auto sigma = diffusion_sigma(t).unsqueeze(1);
   const auto phi = at::cat({grasps.p, flow::so3_log(grasps.R)}, 1).detach();
+  // The loss needs ∂E/∂φ̃ also where the caller turned gradients off (a validation loss).
+  torch::AutoGradMode enable(true);
   const auto noisy = (phi + sigma * noise).requires_grad_(true);
   const auto gradient = energy_gradient(energy, noisy, t, /*create_graph=*/true);
   return (gradient - noise / sigma).abs().mean() / 10;

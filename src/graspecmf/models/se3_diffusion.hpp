@@ -22,7 +22,8 @@ at::Tensor diffusion_sigma(const at::Tensor& t);
 // The projected denoising-score-matching loss of grasps [G]: per grasp t ~ U[10⁻⁵, 1] and
 // n ~ N(0, I₆), φ̃ = φ + σ(t) n, and the mean over the 6G numbers of |∇_φ̃ E(Exp(φ̃), t) − n/σ(t)|,
 // divided by 10. The gradient goes through the exponential map and keeps its graph, so the loss is
-// differentiable in the energy's parameters. Draws t, then n, from generator (CPU).
+// differentiable in the energy's parameters (gradients are on inside, whatever the caller's
+// mode). Draws t, then n, from generator (CPU).
 at::Tensor denoising_score_matching_loss(const PoseEnergy& energy, const flow::PoseBatch& grasps,
                                          at::Generator& generator);
 

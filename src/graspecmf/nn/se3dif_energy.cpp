@@ -19,6 +19,13 @@ constexpr double kDropout = 0.2;
 constexpr double kFrequencyStd = 30.0;
 constexpr std::uint64_t kGripperPointSeed = 0;
 
+// Inverted dropout of x with masks from generator (CPU), in training only.
+torch::Tensor drop(const torch::Tensor& x, bool training, at::Generator* generator) {
+  if (!training || generator == nullptr) return x;
+  const auto keep = at::bernoulli(torch::full(x.sizes(), 1 - kDropout), *generator);
+  return x * keep.to(x.options()) / (1 - kDropout);
+}
+
 }  // namespace
 
 WeightNormLinearImpl::WeightNormLinearImpl(int64_t in_features, int64_t out_features) {
@@ -44,20 +51,20 @@ Se3DifFeatureNetImpl::Se3DifFeatureNetImpl() {
     layers.push_back(register_module("layer" + std::to_string(l), WeightNormLinear(in, out)));
   }
   output = register_module("output", torch::nn::Linear(kWidth, kOutputs));
-  dropout = register_module("dropout", torch::nn::Dropout(kDropout));
 }
 
 torch::Tensor Se3DifFeatureNetImpl::forward(const torch::Tensor& x, const torch::Tensor& t,
-                                            const torch::Tensor& z) const {
+                                            const torch::Tensor& z, at::Generator* dropout) const {
   const auto angles = 2 * M_PI * t.unsqueeze(-1) * frequencies;
   const auto time_code =
       torch::silu(time.ptr()->forward(torch::cat({angles.sin(), angles.cos()}, -1)));
   const auto position_code = torch::silu(position.ptr()->forward(x));
-  const auto input = torch::cat({dropout.ptr()->forward(z), position_code + time_code, x}, -1);
+  const auto input =
+      torch::cat({drop(z, is_training(), dropout), position_code + time_code, x}, -1);
   auto h = input;
   for (int64_t l = 0; l < kLayers; ++l) {
     if (l == kReentry) h = torch::cat({h, input}, -1);
-    h = dropout.ptr()->forward(torch::relu(layers[static_cast<std::size_t>(l)]->forward(h)));
+    h = drop(torch::relu(layers[static_cast<std::size_t>(l)]->forward(h)), is_training(), dropout);
   }
   return torch::tanh(output.ptr()->forward(h));
 }
@@ -76,13 +83,14 @@ Se3DifEnergyImpl::Se3DifEnergyImpl(double position_scale) {
 }
 
 torch::Tensor Se3DifEnergyImpl::forward(const flow::PoseBatch& x, const torch::Tensor& t,
-                                        const torch::Tensor& z) const {
+                                        const torch::Tensor& z, at::Generator* dropout) const {
   flow::check_pose_batch(x, "Se3DifEnergy");
   const int64_t g = x.R.size(0);
   // x_j = R q_j + p for the 30 gripper points [G, 30, 3].
   const auto points = torch::matmul(gripper_points, x.R.transpose(1, 2)) + x.p.unsqueeze(1);
-  const auto psi = features->forward(points, t.unsqueeze(1).expand({g, kGripperPoints}),
-                                     z.unsqueeze(1).expand({g, kGripperPoints, z.size(-1)}));
+  const auto psi =
+      features->forward(points, t.unsqueeze(1).expand({g, kGripperPoints}),
+                        z.unsqueeze(1).expand({g, kGripperPoints, z.size(-1)}), dropout);
   const auto h = torch::relu(norm.ptr()->forward(hidden.ptr()->forward(psi.reshape({g, -1}))));
   return energy.ptr()->forward(h).squeeze(-1);
 }
