@@ -36,7 +36,7 @@ std::vector<Vec3> read_xyz(const fs::path& path, const std::string& bytes) {
   return points;
 }
 
-// Reads `count` little-endian values of 4 or 8 bytes starting at data.
+// The little-endian float or double stored at data.
 template <typename Float>
 Float load(const char* data) {
   Float value;
