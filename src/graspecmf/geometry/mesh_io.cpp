@@ -24,6 +24,7 @@
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/input_file.hpp"
+#include "graspecmf/core/number_text.hpp"
 #include "graspecmf/geometry/ply_body.hpp"
 #include "graspecmf/geometry/ply_header.hpp"
 
@@ -61,21 +62,6 @@ void split_tokens(std::string_view line, std::vector<std::string_view>& tokens) 
     while (i < line.size() && !is_blank(line[i])) ++i;
     if (i > start) tokens.push_back(line.substr(start, i - start));
   }
-}
-
-// Whole token as a correctly rounded double (locale-independent); false if any character is left.
-bool parse_number(std::string_view token, double& out) {
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty()) return false;
-  const char* end = token.data() + token.size();
-  const auto result = std::from_chars(token.data(), end, out);
-  if (result.ptr != end) return false;
-  if (result.ec == std::errc::result_out_of_range) {
-    // Underflow to a subnormal or zero is harmless; overflow is reported as non-finite.
-    out = std::strtod(std::string(token).c_str(), nullptr);
-    return true;
-  }
-  return result.ec == std::errc();
 }
 
 bool parse_index(std::string_view s) {

@@ -1,13 +1,12 @@
 #include "graspecmf/geometry/ply_body.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
 #include <cstring>
 
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/number_text.hpp"
 
 namespace graspecmf::geometry {
 namespace {
@@ -92,17 +91,12 @@ class PlyReader {
     if (at_ == data_.size()) fail("the PLY data ends early (truncated?)");
     std::size_t end = at_;
     while (end < data_.size() && !is_space(data_[end])) ++end;
-    std::string_view token = data_.substr(at_, end - at_);
+    const std::string_view token = data_.substr(at_, end - at_);
     at_ = end;
-    if (token.front() == '+') token.remove_prefix(1);
     double x = 0;
-    const auto result = std::from_chars(token.data(), token.data() + token.size(), x);
-    const bool whole = result.ptr == token.data() + token.size() && !token.empty();
-    if (!whole || (result.ec != std::errc() && result.ec != std::errc::result_out_of_range)) {
+    if (!parse_number(token, x)) {
       fail("the PLY value '" + std::string(token.substr(0, 32)) + "' is not a number");
     }
-    if (result.ec == std::errc::result_out_of_range)
-      x = std::strtod(std::string(token).c_str(), nullptr);
     if (!type.floating && !(std::isfinite(x) && std::floor(x) == x)) {
       fail("the PLY value '" + std::string(token.substr(0, 32)) + "' is not an integer");
     }
