@@ -2,9 +2,6 @@
 
 // CGAL stays in this file: it is compiled on its own with CGAL's flags (-frounding-math), so that
 // the rest of the geometry layer keeps its floating-point code generation.
-#include <CGAL/AABB_traits.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/alpha_wrap_3.h>
@@ -22,33 +19,17 @@
 
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/geometry/unsigned_distance.hpp"
 
 namespace graspecmf::geometry {
 namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Point = Kernel::Point_3;
-using CgalTriangle = Kernel::Triangle_3;
 using SurfaceMesh = CGAL::Surface_mesh<Point>;
-using TriangleIterator = std::vector<CgalTriangle>::const_iterator;
-using AabbTree = CGAL::AABB_tree<
-    CGAL::AABB_traits<Kernel, CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>>>;
 
 Point to_point(const Vec3& v) {
   return {v.x(), v.y(), v.z()};
-}
-
-// The triangles whose corners are not collinear (exact predicate), as CGAL triangles.
-std::vector<CgalTriangle> proper_triangles(const TriangleMesh& mesh) {
-  std::vector<CgalTriangle> out;
-  out.reserve(mesh.triangles.size());
-  for (const Triangle& t : mesh.triangles) {
-    const Point a = to_point(mesh.vertices[t[0]]);
-    const Point b = to_point(mesh.vertices[t[1]]);
-    const Point c = to_point(mesh.vertices[t[2]]);
-    if (!CGAL::collinear(a, b, c)) out.emplace_back(a, b, c);
-  }
-  return out;
 }
 
 // Signed volume enclosed by the triangles (positive for an outward closed mesh), from the bounding
@@ -118,11 +99,11 @@ TriangleMesh alpha_wrap(const TriangleMesh& mesh, const WrapLengths& lengths) {
   return out;
 }
 
-// Largest distance from the points to the tree's triangles.
-double max_distance(const std::vector<Vec3>& points, const AabbTree& tree) {
+// Largest distance from the points to a surface.
+double max_distance(const std::vector<Vec3>& points, const UnsignedDistance& surface) {
   double worst = 0.0;
-  for (const Vec3& p : points) worst = std::max(worst, tree.squared_distance(to_point(p)));
-  return std::sqrt(worst);
+  for (const Vec3& p : points) worst = std::max(worst, surface(p));
+  return worst;
 }
 
 // Every vertex a triangle uses, then `samples` area-uniform surface points.
@@ -165,20 +146,10 @@ bool is_closed_outward(const TriangleMesh& mesh) {
 
 SurfaceDistance surface_distance(const TriangleMesh& a, const TriangleMesh& b, std::size_t samples,
                                  std::uint64_t seed) {
-  validate_mesh(a, "surface distance");
-  validate_mesh(b, "surface distance");
-  const std::vector<CgalTriangle> ta = proper_triangles(a);
-  const std::vector<CgalTriangle> tb = proper_triangles(b);
-  if (ta.empty() || tb.empty()) {
-    throw Error("surface distance: every triangle of a mesh has zero area");
-  }
-  AabbTree tree_a(ta.begin(), ta.end());
-  AabbTree tree_b(tb.begin(), tb.end());
-  tree_a.accelerate_distance_queries();
-  tree_b.accelerate_distance_queries();
+  const UnsignedDistance to_a(a), to_b(b);
   SurfaceDistance d;
-  d.a_to_b = max_distance(probe_points(a, samples, seed), tree_b);
-  d.b_to_a = max_distance(probe_points(b, samples, seed + 1), tree_a);
+  d.a_to_b = max_distance(probe_points(a, samples, seed), to_b);
+  d.b_to_a = max_distance(probe_points(b, samples, seed + 1), to_a);
   return d;
 }
 
