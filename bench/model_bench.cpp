@@ -93,8 +93,11 @@ void time_training_steps(benchmark::State& state, const TrainConfig& config,
   torch::optim::Adam optimizer(model->parameters(), torch::optim::AdamOptions(1e-4));
   at::Generator generator = graspecmf::flow::make_generator(1);
   const graspecmf::models::TrainingBatch batch{
-      torch::randn({4, 1024, 3}), torch::arange(4).repeat_interleave(grasps_per_object),
-      graspecmf::flow::sample_prior(4 * grasps_per_object, 1.0, generator)};
+      torch::randn({4, 1024, 3}),
+      torch::arange(4).repeat_interleave(grasps_per_object),
+      graspecmf::flow::sample_prior(4 * grasps_per_object, 1.0, generator),
+      {},
+      {}};
   for (auto _ : state) {
     const at::Tensor loss = model->loss(batch, generator);
     optimizer.zero_grad();

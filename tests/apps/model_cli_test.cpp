@@ -39,7 +39,8 @@ constexpr const char* kTinyConfig = R"({
 TEST(CliModel, EveryModelTypeTrainsSamplesAndEvaluates) {
   ScratchDir dir;
   const fs::path data = graspecmf::testing::tiny_dataset(dir);
-  for (const std::string type : {"graspecmf", "flow_dgcnn", "graspnet_vae", "graspnet_gan"}) {
+  for (const std::string type :
+       {"graspecmf", "flow_dgcnn", "graspnet_vae", "graspnet_gan", "se3dif"}) {
     nlohmann::json config = nlohmann::json::parse(kTinyConfig);
     config["model"]["type"] = type;
     write_file(dir / (type + ".json"), config.dump());

@@ -149,6 +149,42 @@ TEST(TrainingSampler, StretchFactorsStayInTheirRangeAndZeroTurnsItOff) {
   EXPECT_THROW(TrainingSampler(boxes(1, 1), options, 1), Error);
 }
 
+// Unsigned distance from q to the surface of the box [0, size]³.
+double box_distance(const Eigen::Vector3d& q, double size) {
+  const Eigen::Vector3d outside = (-q.array()).max(q.array() - size).max(0.0).matrix();
+  if (outside.norm() > 0) return outside.norm();
+  return q.cwiseMin(Eigen::Vector3d::Constant(size) - q).minCoeff();
+}
+
+TEST(TrainingSampler, DistanceTargetsAreTheSurfaceDistanceInNetworkUnits) {
+  TrainingSamplerOptions options;
+  options.objects_per_step = 3;
+  options.grasps_per_object = 2;
+  options.points = 64;
+  options.distance_points = 300;
+  TrainingSampler sampler(boxes(3, 2), options, 7);
+  for (const ObjectSample& s : sampler.next_step()) {
+    ASSERT_EQ(s.distance_points.size(), 900U);
+    ASSERT_EQ(s.distances.size(), 300U);
+    const double size = 0.05 + 0.01 * static_cast<double>(s.object);
+    std::size_t inside = 0, far = 0;
+    for (std::size_t i = 0; i < 300; ++i) {
+      const Eigen::Vector3d q =
+          s.rotation.transpose() * (at(s.distance_points, i) / s.scale + s.centroid);
+      EXPECT_NEAR(s.distances[i] / s.scale, box_distance(q, size), 1e-6) << i;
+      inside += (q.array() > 0).all() && (q.array() < size).all();
+      // Beyond 0.02 · radius mostly comes from the wider offsets.
+      far += s.distances[i] / s.scale > 0.02 * 0.5 * std::sqrt(3.0) * size;
+    }
+    EXPECT_GT(inside, 60U);  // about half lie inside
+    EXPECT_LT(inside, 240U);
+    EXPECT_GT(far, 60U);
+  }
+  options.distance_points = 0;
+  TrainingSampler none(boxes(1, 2), options, 7);
+  EXPECT_TRUE(none.next_step()[0].distances.empty());
+}
+
 TEST(TrainingSampler, RestoredStateGivesTheSameSteps) {
   TrainingSamplerOptions options;
   options.objects_per_step = 2;

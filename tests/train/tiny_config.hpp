@@ -15,6 +15,7 @@ inline models::TrainConfig tiny_config() {
   c.model.field.z_channels = 6;
   c.model.field.hidden_widths = {8, 8};
   c.model.graspnet.centroids = 8;
+  c.model.se3dif.distance_points = 16;
   c.data.points = 32;
   c.data.objects_per_step = 2;
   c.data.grasps_per_object = 8;

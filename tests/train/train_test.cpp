@@ -92,6 +92,29 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
                Error);
 }
 
+TEST(TrainConfig, OnlySe3DifDrawsDistanceQueries) {
+  const TrainConfig se3dif = train_config_from_json(
+      {{"model", {{"type", "se3dif"}, {"se3dif", {{"distance_points", 250}}}}}});
+  EXPECT_EQ(sampler_options(se3dif).distance_points, 250U);
+  EXPECT_EQ(se3dif.data.distance_points, 0U);  // not a data key of its own
+  EXPECT_EQ(
+      sampler_options(train_config_from_json({{"model", {{"type", "se3dif"}}}})).distance_points,
+      1000U);  // the reference's
+  const TrainConfig flow =
+      train_config_from_json({{"model", {{"se3dif", {{"distance_points", 250}}}}}});
+  EXPECT_EQ(sampler_options(flow).distance_points, 0U);
+  graspecmf::testing::expect_error(
+      [] {
+        train_config_from_json({{"model", {{"se3dif", {{"distance_points", 100001}}}}}});
+      },
+      "model.se3dif.distance_points must be at most 100000");
+  graspecmf::testing::expect_error(
+      [] {
+        train_config_from_json({{"model", {{"se3dif", {{"points", 10}}}}}});
+      },
+      "model.se3dif.");
+}
+
 TEST(TrainConfig, IntegersAreIntegersWithinRange) {
   const auto expect = [](const nlohmann::json& j, const std::string& fragment) {
     graspecmf::testing::expect_error([&] { train_config_from_json(j); }, fragment);

@@ -62,6 +62,20 @@ void stretch_object(geometry::SurfacePoints& cloud, std::vector<lie::Pose>& gras
   }
 }
 
+DistanceSamples near_surface_distances(const geometry::SurfaceSampler& surface,
+                                       const geometry::UnsignedDistance& distance,
+                                       std::size_t count, double radius, Rng& rng) {
+  DistanceSamples out;
+  out.points = surface.sample(count, rng).points;
+  for (std::size_t i = 0; i < count; ++i) {
+    const double sigma = (i % 2 == 0 ? 0.05 : 0.0158) * radius;
+    Eigen::Vector3d& q = out.points[i];
+    for (int k = 0; k < 3; ++k) q[k] += sigma * rng.normal();
+    out.distances.push_back(distance(q));
+  }
+  return out;
+}
+
 TrainingSampler::TrainingSampler(std::vector<GraspObject> objects,
                                  const TrainingSamplerOptions& options, std::uint64_t seed)
     : objects_(std::move(objects)), options_(options), rng_(seed) {
@@ -76,6 +90,10 @@ TrainingSampler::TrainingSampler(std::vector<GraspObject> objects,
   for (const GraspObject& object : objects_) {
     if (object.grasps.empty()) throw Error("object " + object.name + " has no successful grasp");
     surfaces_.emplace_back(object.mesh);  // objects_ is never resized, so the reference holds
+    if (options.distance_points > 0) {
+      distances_.emplace_back(object.mesh);
+      radii_.push_back(0.5 * geometry::bounding_box(object.mesh).extent().norm());
+    }
   }
 }
 
@@ -109,15 +127,29 @@ std::vector<ObjectSample> TrainingSampler::next_step() {
               .toRotationMatrix();
     }
     geometry::SurfacePoints cloud = surfaces_[index].sample(options_.points, rng_);
+    DistanceSamples queries;
+    if (options_.distance_points > 0) {
+      queries = near_surface_distances(surfaces_[index], distances_[index],
+                                       options_.distance_points, radii_[index], rng_);
+    }
     Eigen::Vector3d factors = Eigen::Vector3d::Ones();
     if (options_.stretch > 0) {
       for (int axis = 0; axis < 3; ++axis)
         factors[axis] += options_.stretch * (2.0 * rng_.uniform() - 1.0);
       stretch_object(cloud, grasps, factors);
+      // The queries move with the surface and keep their distances: approximate targets, as the
+      // stretched grasps' labels are.
+      for (Eigen::Vector3d& q : queries.points) q = q.cwiseProduct(factors);
     }
     ObjectSample sample = make_object_sample(cloud, grasps, g, options_.position_scale);
     sample.object = index;
     sample.stretch = factors;
+    const NetworkFrame frame{g, sample.centroid, sample.scale};
+    for (std::size_t i = 0; i < queries.points.size(); ++i) {
+      const Eigen::Vector3d q = frame.to_network(queries.points[i]);
+      for (int c = 0; c < 3; ++c) sample.distance_points.push_back(static_cast<float>(q[c]));
+      sample.distances.push_back(static_cast<float>(sample.scale * queries.distances[i]));
+    }
     step.push_back(std::move(sample));
   }
   return step;

@@ -11,6 +11,7 @@
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
+#include "graspecmf/geometry/unsigned_distance.hpp"
 
 namespace graspecmf::data {
 
@@ -32,6 +33,8 @@ struct ObjectSample {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();      // c, metres, after the rotation
   double scale = 1.0;
   Eigen::Vector3d stretch = Eigen::Vector3d::Ones();  // shape augmentation factors, object frame
+  std::vector<float> distance_points;  // K × 3 queries near the surface, network units
+  std::vector<float> distances;        // their K unsigned distances to the surface, network units
 };
 
 struct TrainingSamplerOptions {
@@ -43,6 +46,9 @@ struct TrainingSamplerOptions {
   // Shape augmentation: before the rotation, each object is stretched along its own x, y and z
   // axes by factors drawn uniformly from [1 − stretch, 1 + stretch]; 0 turns it off.
   double stretch = 0.0;
+  // Distance-field targets (SE(3)-DiF's auxiliary loss): query points near the surface per object
+  // with their unsigned distances to it; 0 draws none.
+  std::size_t distance_points = 0;
 };
 
 // Stretches a sampled object by S = diag(factors) in its own frame: points q → S q (normals
@@ -50,6 +56,18 @@ struct TrainingSamplerOptions {
 // Approximate labels for a slightly different shape: a stretched surface's normals tilt.
 void stretch_object(geometry::SurfacePoints& cloud, std::vector<lie::Pose>& grasps,
                     const Eigen::Vector3d& factors);
+
+// Query points near a surface and their unsigned distances to it, metres.
+struct DistanceSamples {
+  std::vector<Eigen::Vector3d> points;
+  std::vector<double> distances;
+};
+// count surface points each moved by an isotropic Gaussian offset, of standard deviation
+// 0.05 · radius for the even-numbered and 0.0158 · radius for the odd-numbered ones (the offsets
+// of the mesh_to_sdf library's near-surface sampling for a mesh of that bounding radius).
+DistanceSamples near_surface_distances(const geometry::SurfaceSampler& surface,
+                                       const geometry::UnsignedDistance& distance,
+                                       std::size_t count, double radius, Rng& rng);
 
 // The cloud of `points` surface points of mesh, rotated by g, centred and scaled; grasps likewise.
 ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,
@@ -73,6 +91,8 @@ class TrainingSampler {
  private:
   std::vector<GraspObject> objects_;
   std::vector<geometry::SurfaceSampler> surfaces_;
+  std::vector<geometry::UnsignedDistance> distances_;  // only when options_.distance_points > 0
+  std::vector<double> radii_;                          // half the bounding-box diagonals
   TrainingSamplerOptions options_;
   Rng rng_;
   std::vector<std::size_t> order_;

@@ -6,6 +6,7 @@
 #include "graspecmf/models/flow_dgcnn_generator.hpp"
 #include "graspecmf/models/graspecmf_generator.hpp"
 #include "graspecmf/models/graspnet_generator.hpp"
+#include "graspecmf/models/se3dif_generator.hpp"
 
 namespace graspecmf::models {
 
@@ -33,6 +34,10 @@ Generator make_graspnet(const TrainConfig& c) {
                                              c.model.graspnet, c.data.position_scale);
 }
 
+Generator make_se3dif(const TrainConfig& c) {
+  return std::make_shared<Se3DifGenerator>(c.data.position_scale, c.prior_position_std);
+}
+
 using Factory = Generator (*)(const TrainConfig&);
 
 // Every model type and how to build it: the one list of model types.
@@ -41,7 +46,8 @@ const std::vector<std::pair<std::string, Factory>>& registry() {
       {"graspecmf", make_graspecmf},
       {"flow_dgcnn", make_flow_dgcnn},
       {"graspnet_vae", make_graspnet},
-      {"graspnet_gan", make_graspnet}};
+      {"graspnet_gan", make_graspnet},
+      {"se3dif", make_se3dif}};
   return types;
 }
 

@@ -28,6 +28,9 @@ struct TrainingBatch {
   at::Tensor points;        // [O, N, 3] float32 clouds
   at::Tensor object_index;  // [G] int64: the object of each grasp
   flow::PoseBatch grasps;   // R [G, 3, 3], p [G, 3] float32: successful grasps
+  // Undefined unless the sampler drew distance-field queries (sampler_options):
+  at::Tensor distance_points;  // [O, K, 3] float32 queries near each object's surface
+  at::Tensor distances;        // [O, K] float32 their unsigned distances to it
 };
 
 class GeneratorImpl : public torch::nn::Module {

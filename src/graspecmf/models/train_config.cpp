@@ -114,6 +114,9 @@ void validate(const TrainConfig& c) {
         "train config: model.graspnet needs 1 ≤ latent_size ≤ 64, radius > 0, "
         "centroids ≥ 4 and non-negative weights");
   }
+  if (c.model.se3dif.distance_points > 100000) {
+    throw Error("train config: model.se3dif.distance_points must be at most 100000");
+  }
   if (c.model.type.rfind("graspnet_", 0) == 0 && g.centroids > e.points) {
     throw Error("train config: model.graspnet.centroids must not exceed encoder.points");
   }
@@ -185,7 +188,8 @@ json to_json(const TrainConfig& c) {
               {"radius", g.radius},
               {"centroids", g.centroids},
               {"kl_weight", g.kl_weight},
-              {"confidence_weight", g.confidence_weight}}}}},
+              {"confidence_weight", g.confidence_weight}}},
+            {"se3dif", {{"distance_points", c.model.se3dif.distance_points}}}}},
           {"data",
            {{"objects_per_step", c.data.objects_per_step},
             {"grasps_per_object", c.data.grasps_per_object},
@@ -221,7 +225,7 @@ TrainConfig train_config_from_json(const json& j) {
        "");
   if (j.contains("model")) {
     const json& m = j["model"];
-    only(m, {"type", "encoder", "field", "graspnet"}, "model.");
+    only(m, {"type", "encoder", "field", "graspnet", "se3dif"}, "model.");
     read(m, "type", c.model.type, "model.");
     if (m.contains("encoder")) {
       const json& e = m["encoder"];
@@ -249,6 +253,10 @@ TrainConfig train_config_from_json(const json& j) {
       read(g, "centroids", o.centroids, "model.graspnet.");
       read(g, "kl_weight", o.kl_weight, "model.graspnet.");
       read(g, "confidence_weight", o.confidence_weight, "model.graspnet.");
+    }
+    if (m.contains("se3dif")) {
+      only(m["se3dif"], {"distance_points"}, "model.se3dif.");
+      read(m["se3dif"], "distance_points", c.model.se3dif.distance_points, "model.se3dif.");
     }
   }
   if (j.contains("data")) {
@@ -288,6 +296,12 @@ TrainConfig train_config_from_json(const json& j) {
   c.data.points = static_cast<std::size_t>(c.model.encoder.points);
   validate(c);
   return c;
+}
+
+data::TrainingSamplerOptions sampler_options(const TrainConfig& config) {
+  data::TrainingSamplerOptions options = config.data;
+  options.distance_points = config.model.type == "se3dif" ? config.model.se3dif.distance_points : 0;
+  return options;
 }
 
 TrainConfig read_train_config(const std::filesystem::path& path) {

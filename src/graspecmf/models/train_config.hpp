@@ -29,12 +29,20 @@ struct GraspNetOptions {
   double confidence_weight = 1.0;  // w_c of both losses
 };
 
+// The settings of SE(3)-DiffusionFields (model.type se3dif).
+struct Se3DifOptions {
+  // Queries near each object's surface per step for the auxiliary distance-field loss; 0 leaves
+  // that loss out.
+  std::size_t distance_points = 1000;
+};
+
 // Which generator to build and its network settings (docs/config.md, `model`).
 struct ModelConfig {
   std::string type = "graspecmf";  // the generator (make_generator)
   nn::EncoderOptions encoder;      // its points also set the cloud size of every model
   nn::VectorFieldOptions field;    // field.z_channels follows encoder.out_channels
   GraspNetOptions graspnet;
+  Se3DifOptions se3dif;
 };
 
 struct TrainConfig {
@@ -60,6 +68,10 @@ struct TrainConfig {
   std::size_t validation_objects = 10;  // at most this many validation objects
   SamplingSettings sampling;
 };
+
+// The training sampler's options of a run: config.data, with the distance-field queries the model
+// type needs (model.se3dif.distance_points for se3dif, none otherwise).
+data::TrainingSamplerOptions sampler_options(const TrainConfig& config);
 
 // The Adam learning rate of step 1 ≤ step ≤ config.steps under the config's schedule.
 double learning_rate_at(const TrainConfig& config, std::int64_t step);

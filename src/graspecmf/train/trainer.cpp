@@ -68,19 +68,28 @@ models::TrainingBatch to_tensors(const std::vector<data::ObjectSample>& samples,
   const auto copy = [](const std::vector<float>& values, std::vector<int64_t> shape) {
     return torch::from_blob(const_cast<float*>(values.data()), shape, torch::kFloat).clone();
   };
-  std::vector<at::Tensor> points, rotations, positions, index;
+  std::vector<at::Tensor> points, rotations, positions, index, queries, distances;
   for (std::size_t o = 0; o < samples.size(); ++o) {
     const data::ObjectSample& s = samples[o];
     const auto n = static_cast<int64_t>(s.points.size() / 3);
     const auto g = static_cast<int64_t>(s.positions.size() / 3);
+    const auto k = static_cast<int64_t>(s.distances.size());
     points.push_back(copy(s.points, {n, 3}));
     rotations.push_back(copy(s.rotations, {g, 3, 3}));
     positions.push_back(copy(s.positions, {g, 3}));
     index.push_back(torch::full({g}, static_cast<int64_t>(o), torch::kLong));
+    queries.push_back(copy(s.distance_points, {k, 3}));
+    distances.push_back(copy(s.distances, {k}));
   }
-  return {torch::stack(points).to(device),
-          torch::cat(index).to(device),
-          {torch::cat(rotations).to(device), torch::cat(positions).to(device)}};
+  models::TrainingBatch batch;
+  batch.points = torch::stack(points).to(device);
+  batch.object_index = torch::cat(index).to(device);
+  batch.grasps = {torch::cat(rotations).to(device), torch::cat(positions).to(device)};
+  if (!samples.empty() && !samples[0].distances.empty()) {
+    batch.distance_points = torch::stack(queries).to(device);
+    batch.distances = torch::stack(distances).to(device);
+  }
+  return batch;
 }
 
 // Validation: the loss on a fixed batch of the validation objects and their mean EMD.
@@ -92,7 +101,7 @@ json validation_record(const models::Generator& model,
   model->eval();
   {
     torch::NoGradGuard no_grad;
-    data::TrainingSamplerOptions options = config.data;
+    data::TrainingSamplerOptions options = models::sampler_options(config);
     options.objects_per_step = objects.size();
     data::TrainingSampler sampler(objects, options, kValidationSeed);
     at::Generator generator = flow::make_generator(kValidationSeed);
@@ -234,7 +243,7 @@ TrainResult train(const TrainConfig& config, const fs::path& data_dir, const fs:
       torch::optim::AdamOptions(config.learning_rate).weight_decay(config.weight_decay));
   std::vector<data::GraspObject> training = load_objects(dataset, split.train, split.train.size());
   if (training.empty()) throw Error(data_dir.string() + ": no usable object in the train split");
-  data::TrainingSampler sampler(std::move(training), config.data, config.seed);
+  data::TrainingSampler sampler(std::move(training), models::sampler_options(config), config.seed);
   const std::vector<data::GraspObject> validation =
       load_objects(dataset, split.val, config.validation_objects);
   const OutputLock lock = prepare_run(run_dir, config);
