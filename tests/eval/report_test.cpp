@@ -26,8 +26,8 @@ EvaluationReport two_objects(bool baselines, bool success) {
   r.step = 48000;
   r.settings = {"rkmk4", 20, 2.0, 8, {}};
   r.seed = 3;
-  r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, {}, {}, {}});
-  r.objects.push_back({"b", 40, {0.5, 0.5, 0.5}, 0.5, {}, {}, {}});
+  r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, 1.5, {}, {}, {}});
+  r.objects.push_back({"b", 40, {0.5, 0.5, 0.5}, 0.5, 0.5, {}, {}, {}});
   if (baselines) {
     r.objects[0].baselines = BaselineScores{1.5, "t1", 0.6, 50, 0.25};
     r.objects[1].baselines = BaselineScores{1.7, "t2", 0.4, 30, std::nullopt};
@@ -52,6 +52,12 @@ TEST(EvaluationReport, JsonHoldsTheObjectsAndTheirMeans) {
   ASSERT_EQ(j["objects"].size(), 2U);
   EXPECT_EQ(j["objects"][1]["n"], 40);
   EXPECT_DOUBLE_EQ(j["mean_emd"].get<double>(), 0.4);
+  // Resampling two objects gives means 0.3, 0.4 and 0.5 only.
+  EXPECT_DOUBLE_EQ(j["mean_emd_ci_95"][0].get<double>(), 0.3);
+  EXPECT_DOUBLE_EQ(j["mean_emd_ci_95"][1].get<double>(), 0.5);
+  // 2 s for 3 × (50 + 40) grasps.
+  EXPECT_NEAR(j["sampling_seconds_per_100_grasps"].get<double>(), 200.0 / 270, 1e-12);
+  EXPECT_EQ(j["objects"][0]["sampling_seconds"], 1.5);
   EXPECT_FALSE(j.contains("mean_nearest_emd"));
   EXPECT_FALSE(j.contains("success"));
   EXPECT_FALSE(j["objects"][0].contains("floor_emd"));
@@ -71,6 +77,10 @@ TEST(EvaluationReport, BaselinesAndSuccessAreSummed) {
   EXPECT_NEAR(j["floor_comparison"]["median_model_excess"].get<double>(), 0.05, 1e-12);
   EXPECT_EQ(j["success"]["successes"], 50);
   EXPECT_EQ(j["success"]["trials"], 90);
+  // By object: 80 % and 25 %.
+  EXPECT_NEAR(j["success_rate_by_object"]["mean"].get<double>(), 0.525, 1e-12);
+  EXPECT_NEAR(j["success_rate_by_object"]["ci_95"][0].get<double>(), 0.25, 1e-12);
+  EXPECT_NEAR(j["success_rate_by_object"]["ci_95"][1].get<double>(), 0.8, 1e-12);
   EXPECT_NEAR(j["success"]["collision_rate"].get<double>(), 1 - 65.0 / 90, 1e-12);
   EXPECT_EQ(j["nearest_success"]["successes"], 40);
   EXPECT_EQ(j["nearest_success_comparison"]["wins"], 1);  // a: 80 % against 40 %
@@ -97,7 +107,12 @@ TEST(EvaluationReport, MarkdownRowsHaveTheHeadersColumns) {
             std::string::npos)
       << page;
   EXPECT_NE(page.find("0.4000 (t2, n = 30) | n/a |"), std::string::npos) << page;
-  EXPECT_NE(page.find("mean EMD over 2 objects: 0.4000 (random grasps 1.6000"), std::string::npos);
+  EXPECT_NE(page.find("mean EMD over 2 objects: 0.4000, 95 % bootstrap interval [0.3000, 0.5000] "
+                      "(random grasps 1.6000"),
+            std::string::npos)
+      << page;
+  EXPECT_NE(page.find("by object 52.5 %, 95 % interval [25.0, 80.0] %"), std::string::npos);
+  EXPECT_NE(page.find("; sampling 0.741 s per 100 grasps"), std::string::npos);
   EXPECT_NE(page.find("simulated success 55.6 % (50 of 90 grasps"), std::string::npos) << page;
 }
 

@@ -75,6 +75,25 @@ TEST(PairedComparison, BootstrapIntervalIsSeededAndBracketsTheMean) {
   EXPECT_EQ(shift.wins, 3u);
 }
 
+TEST(BootstrapMean, IntervalOfAShareMatchesTheNormalApproximation) {
+  // 60 objects, 20 of them 1: mean 1/3, standard error sqrt(p (1 − p) / n) ≈ 0.0609.
+  std::vector<double> values(60, 0.0);
+  for (std::size_t i = 0; i < 20; ++i) values[3 * i] = 1.0;
+  const MeanInterval m = bootstrap_mean(values, 5);
+  EXPECT_NEAR(m.mean, 1.0 / 3, 1e-15);
+  const double half_width = 1.96 * std::sqrt((1.0 / 3) * (2.0 / 3) / 60);
+  EXPECT_NEAR(m.low, 1.0 / 3 - half_width, 0.02);
+  EXPECT_NEAR(m.high, 1.0 / 3 + half_width, 0.02);
+  EXPECT_EQ(bootstrap_mean(values, 5).low, m.low);  // seeded
+  // The paired comparison's interval is the bootstrap interval of the differences.
+  const auto [a, b] = scores(18, 12);
+  std::vector<double> difference(a.size());
+  for (std::size_t i = 0; i < a.size(); ++i) difference[i] = b[i] - a[i];
+  EXPECT_EQ(compare_paired(a, b, 9).ci_low, bootstrap_mean(difference, 9).low);
+  EXPECT_THROW(bootstrap_mean({}, 1), Error);
+  EXPECT_THROW(bootstrap_mean({0.5}, 1, 0), Error);
+}
+
 TEST(PairedComparison, RejectsBadInput) {
   EXPECT_THROW(compare_paired({0.1}, {0.1, 0.2}, 1), Error);
   EXPECT_THROW(compare_paired({}, {}, 1), Error);

@@ -79,6 +79,7 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
     result.n = e.n;
     result.emd = e.emd;
     result.mean_emd = e.mean_emd;
+    result.sampling_seconds = e.sampling_seconds;
     std::optional<BaselineEvaluation> baseline;
     if (shapes) {
       baseline.emplace(evaluate_baselines(object, *shapes, n, o.seed, filter));

@@ -1,5 +1,6 @@
 #include "graspecmf/eval/evaluation.hpp"
 
+#include <chrono>
 #include <limits>
 #include <numeric>
 #include <optional>
@@ -73,9 +74,12 @@ ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
     for (const lie::Pose& x : reference) rotated_reference.push_back({g * x.R, g * x.p});
     std::optional<gripper::CloudGraspFilter> rotated_filter;
     if (filter.checks.any()) rotated_filter.emplace(rotated(filter.points, g), filter.checks);
+    const auto start = std::chrono::steady_clock::now();
     const std::vector<lie::Pose> generated =
         models::sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
                               rotated_filter ? &*rotated_filter : nullptr);
+    result.sampling_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
     std::vector<lie::Pose>& kept = result.generated.emplace_back();
     for (const lie::Pose& x : generated) kept.push_back({g.transpose() * x.R, g.transpose() * x.p});

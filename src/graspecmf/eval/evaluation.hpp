@@ -20,6 +20,7 @@ struct ObjectEvaluation {
   std::size_t n = 0;        // grasps compared per rotation
   std::vector<double> emd;  // one per rotation
   double mean_emd = 0.0;
+  double sampling_seconds = 0.0;  // wall time drawing the grasps, all rotations together
   // The n generated grasps of each rotation, rotated back into the object's frame.
   std::vector<std::vector<lie::Pose>> generated;
 };

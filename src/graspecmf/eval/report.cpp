@@ -65,6 +65,9 @@ json comparison_json(const metrics::PairedComparison& c) {
 struct Derived {
   bool baselines = false, success = false;
   double mean_emd = 0, mean_random = 0, mean_nearest = 0;
+  metrics::MeanInterval emd;                      // the mean over objects of their mean EMDs
+  std::optional<metrics::MeanInterval> rate;      // the mean over objects of their success rates
+  double seconds_per_100 = 0;                     // sampling wall time per 100 generated grasps
   metrics::PairedComparison nearest;              // model EMD against nearest-object EMD
   std::optional<double> mean_floor;               // when every object has a floor
   std::optional<metrics::FloorComparison> floor;  // when some object has one
@@ -78,6 +81,17 @@ Derived derive(const EvaluationReport& r) {
   d.baselines = all_have(r, &ObjectResult::baselines);
   d.success = all_have(r, &ObjectResult::success);
   d.mean_emd = mean_over(r, [](const ObjectResult& o) { return o.mean_emd; });
+  std::vector<double> emds, rates;
+  double seconds = 0, grasps = 0;
+  for (const ObjectResult& o : r.objects) {
+    emds.push_back(o.mean_emd);
+    if (d.success) rates.push_back(o.success->all.rate());
+    seconds += o.sampling_seconds;
+    grasps += static_cast<double>(o.n * o.emd.size());
+  }
+  d.emd = metrics::bootstrap_mean(emds, r.seed);
+  if (d.success) d.rate = metrics::bootstrap_mean(rates, r.seed);
+  d.seconds_per_100 = grasps > 0 ? 100 * seconds / grasps : 0;
   if (d.baselines) {
     std::vector<double> model, nearest, floored_model, floored_nearest, floors;
     for (const ObjectResult& o : r.objects) {
@@ -135,7 +149,11 @@ json to_json(const EvaluationReport& r) {
   const Derived d = derive(r);
   json objects = json::array();
   for (const ObjectResult& o : r.objects) {
-    json entry = {{"object", o.name}, {"n", o.n}, {"emd", o.emd}, {"mean_emd", o.mean_emd}};
+    json entry = {{"object", o.name},
+                  {"n", o.n},
+                  {"emd", o.emd},
+                  {"mean_emd", o.mean_emd},
+                  {"sampling_seconds", o.sampling_seconds}};
     if (d.baselines) {
       const BaselineScores& b = *o.baselines;
       entry["random_emd"] = b.random_emd;
@@ -163,7 +181,9 @@ json to_json(const EvaluationReport& r) {
               {"reject_shallow", s.checks.shallow}}},
             {"seed", r.seed},
             {"objects", objects},
-            {"mean_emd", d.mean_emd}};
+            {"mean_emd", d.mean_emd},
+            {"mean_emd_ci_95", {d.emd.low, d.emd.high}},
+            {"sampling_seconds_per_100_grasps", d.seconds_per_100}};
   if (d.baselines) {
     j["mean_random_emd"] = d.mean_random;
     j["mean_nearest_emd"] = d.mean_nearest;
@@ -179,6 +199,7 @@ json to_json(const EvaluationReport& r) {
   }
   if (d.success) {
     j["success"] = outcomes_json(d.model_success);
+    j["success_rate_by_object"] = {{"mean", d.rate->mean}, {"ci_95", {d.rate->low, d.rate->high}}};
     if (d.baselines) {
       j["nearest_success"] = outcomes_json(d.nearest_success);
       j["nearest_success_comparison"] = comparison_json(d.success_comparison);
@@ -219,7 +240,9 @@ std::string markdown_table(const EvaluationReport& r) {
 std::string summary(const EvaluationReport& r) {
   const Derived d = derive(r);
   const std::size_t count = r.objects.size();
-  std::string text = fmt::format("mean EMD over {} objects: {:.4f}", count, d.mean_emd);
+  std::string text =
+      fmt::format("mean EMD over {} objects: {:.4f}, 95 % bootstrap interval [{:.4f}, {:.4f}]",
+                  count, d.mean_emd, d.emd.low, d.emd.high);
   if (d.baselines) {
     const metrics::PairedComparison& c = d.nearest;
     text += fmt::format(
@@ -241,9 +264,10 @@ std::string summary(const EvaluationReport& r) {
     const sim::GraspOutcomes& s = d.model_success;
     text += fmt::format(
         "; simulated success {:.1f} % ({} of {} grasps; {:.1f} % start in collision with the "
-        "object, {:.1f} % success among the others)",
+        "object, {:.1f} % success among the others; by object {:.1f} %, 95 % interval "
+        "[{:.1f}, {:.1f}] %)",
         100 * s.all.rate(), s.all.successes, s.all.trials, 100 * s.collision_rate(),
-        100 * s.collision_free.rate());
+        100 * s.collision_free.rate(), 100 * d.rate->mean, 100 * d.rate->low, 100 * d.rate->high);
     if (d.baselines) {
       const metrics::PairedComparison& c = d.success_comparison;
       text += fmt::format(
@@ -253,7 +277,7 @@ std::string summary(const EvaluationReport& r) {
           c.losses, c.sign_test_p);
     }
   }
-  return text;
+  return text + fmt::format("; sampling {:.3g} s per 100 grasps", d.seconds_per_100);
 }
 
 std::string to_markdown(const EvaluationReport& r) {

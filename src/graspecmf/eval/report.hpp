@@ -31,6 +31,7 @@ struct ObjectResult {
   std::size_t n = 0;        // grasps compared per rotation
   std::vector<double> emd;  // one per test rotation
   double mean_emd = 0.0;
+  double sampling_seconds = 0.0;  // wall time drawing its n grasps at every rotation
   std::optional<BaselineScores> baselines;
   std::optional<sim::GraspOutcomes> success;          // the model's grasps in the simulator
   std::optional<sim::GraspOutcomes> nearest_success;  // the nearest object's grasps

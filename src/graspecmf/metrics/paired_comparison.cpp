@@ -47,6 +47,23 @@ void check_scores(const char* caller, std::initializer_list<const std::vector<do
 
 }  // namespace
 
+MeanInterval bootstrap_mean(const std::vector<double>& values, std::uint64_t seed,
+                            std::size_t resamples) {
+  check_scores("bootstrap_mean", {&values});
+  if (resamples == 0) throw Error("bootstrap_mean: resamples must be positive");
+  const auto n = static_cast<double>(values.size());
+  Rng rng(seed);
+  std::vector<double> means(resamples);
+  for (double& mean : means) {
+    double sum = 0.0;
+    for (std::size_t i = 0; i < values.size(); ++i) sum += values[rng.index(values.size())];
+    mean = sum / n;
+  }
+  std::sort(means.begin(), means.end());
+  return {std::accumulate(values.begin(), values.end(), 0.0) / n, quantile(means, 0.025),
+          quantile(means, 0.975)};
+}
+
 PairedComparison compare_paired(const std::vector<double>& a, const std::vector<double>& b,
                                 std::uint64_t seed, std::size_t resamples) {
   check_scores("compare_paired", {&a, &b});
@@ -63,20 +80,10 @@ PairedComparison compare_paired(const std::vector<double>& a, const std::vector<
   if (decided > 0) {
     c.sign_test_p = std::min(1.0, 2.0 * binomial_half_cdf(std::min(c.wins, c.losses), decided));
   }
-  const auto n = static_cast<double>(difference.size());
-  c.mean_difference = std::accumulate(difference.begin(), difference.end(), 0.0) / n;
-
-  Rng rng(seed);
-  std::vector<double> means(resamples);
-  for (double& mean : means) {
-    double sum = 0.0;
-    for (std::size_t i = 0; i < difference.size(); ++i)
-      sum += difference[rng.index(difference.size())];
-    mean = sum / n;
-  }
-  std::sort(means.begin(), means.end());
-  c.ci_low = quantile(means, 0.025);
-  c.ci_high = quantile(means, 0.975);
+  const MeanInterval mean = bootstrap_mean(difference, seed, resamples);
+  c.mean_difference = mean.mean;
+  c.ci_low = mean.low;
+  c.ci_high = mean.high;
   return c;
 }
 

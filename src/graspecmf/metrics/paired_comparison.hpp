@@ -19,6 +19,18 @@ struct PairedComparison {
   double ci_high = 0.0;
 };
 
+// A mean over objects with its 95 % percentile-bootstrap interval.
+struct MeanInterval {
+  double mean = 0.0;
+  double low = 0.0;
+  double high = 0.0;
+};
+
+// The mean of values and the interval of `resamples` bootstrap draws of them (with replacement)
+// from `seed`. Throws Error if values is empty or not finite, or resamples is 0.
+MeanInterval bootstrap_mean(const std::vector<double>& values, std::uint64_t seed,
+                            std::size_t resamples = 10000);
+
 // Compares scores a[i] and b[i] of the same objects; `resamples` bootstrap draws of the objects
 // (with replacement) from `seed`. Throws Error if the lists differ in length, are empty, hold a
 // non-finite score, or resamples is 0.
