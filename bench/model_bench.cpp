@@ -10,6 +10,7 @@
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/models/grasp_sampling.hpp"
 #include "graspecmf/models/graspecmf_generator.hpp"
+#include "graspecmf/models/train_config.hpp"
 
 namespace {
 
@@ -83,21 +84,28 @@ BENCHMARK(BM_SampleGrasps)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// Times training steps (loss, backward, Adam) of a fresh generator of the config's type on random
-// clouds of 1024 points, 4 objects × grasps_per_object grasps, with `threads` LibTorch threads.
-void time_training_steps(benchmark::State& state, const TrainConfig& config,
-                         int64_t grasps_per_object, int64_t threads) {
+// Times training steps (loss, backward, Adam) of a fresh generator of the config's type on a
+// random batch of the config's shape (objects_per_step clouds of encoder.points points,
+// grasps_per_object grasps each, and the distance queries its type draws), with `threads` LibTorch
+// threads.
+void time_training_steps(benchmark::State& state, const TrainConfig& config, int64_t threads) {
   at::set_num_threads(static_cast<int>(threads));
   torch::manual_seed(0);
   const graspecmf::models::Generator model = graspecmf::models::make_generator(config);
   torch::optim::Adam optimizer(model->parameters(), torch::optim::AdamOptions(1e-4));
   at::Generator generator = graspecmf::flow::make_generator(1);
-  const graspecmf::models::TrainingBatch batch{
-      torch::randn({4, 1024, 3}),
-      torch::arange(4).repeat_interleave(grasps_per_object),
-      graspecmf::flow::sample_prior(4 * grasps_per_object, 1.0, generator),
-      {},
-      {}};
+  const auto objects = static_cast<int64_t>(config.data.objects_per_step);
+  const auto grasps = static_cast<int64_t>(config.data.grasps_per_object);
+  const auto queries =
+      static_cast<int64_t>(graspecmf::models::sampler_options(config).distance_points);
+  graspecmf::models::TrainingBatch batch;
+  batch.points = torch::randn({objects, config.model.encoder.points, 3});
+  batch.object_index = torch::arange(objects).repeat_interleave(grasps);
+  batch.grasps = graspecmf::flow::sample_prior(objects * grasps, 1.0, generator);
+  if (queries > 0) {
+    batch.distance_points = torch::randn({objects, queries, 3});
+    batch.distances = torch::rand({objects, queries}) * 0.2;
+  }
   for (auto _ : state) {
     const at::Tensor loss = model->loss(batch, generator);
     optimizer.zero_grad();
@@ -108,7 +116,7 @@ void time_training_steps(benchmark::State& state, const TrainConfig& config,
 
 // One flow-matching step of the paper-sized model, 4 objects × 300 grasps: arg = threads.
 void BM_TrainingStep(benchmark::State& state) {
-  time_training_steps(state, TrainConfig{}, 300, state.range(0));
+  time_training_steps(state, TrainConfig{}, state.range(0));
 }
 BENCHMARK(BM_TrainingStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
@@ -117,11 +125,47 @@ BENCHMARK(BM_TrainingStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRe
 void BM_GraspNetTrainingStep(benchmark::State& state) {
   TrainConfig config;
   config.model.type = state.range(0) == 0 ? "graspnet_vae" : "graspnet_gan";
-  time_training_steps(state, config, 16, state.range(1));
+  config.data.grasps_per_object = 16;
+  time_training_steps(state, config, state.range(1));
 }
 BENCHMARK(BM_GraspNetTrainingStep)
     ->ArgsProduct({{0, 1}, {2}})
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// The Table I config (configs/table1/, docs/results/table1.md) of model 0 graspecmf,
+// 1 flow_dgcnn, 2 graspnet_vae, 3 graspnet_gan or 4 se3dif, with the benchmark labelled by it.
+TrainConfig table1_config(benchmark::State& state, int64_t model) {
+  const char* models[] = {"graspecmf", "flow_dgcnn", "graspnet_vae", "graspnet_gan", "se3dif"};
+  const std::string name = models[model];
+  state.SetLabel(name);
+  return graspecmf::models::read_train_config(std::string(GRASPECMF_DATA_DIR) +
+                                              "/../configs/table1/" + name + ".json");
+}
+
+// One training step of each Table I config on one thread: arg = model.
+void BM_Table1TrainingStep(benchmark::State& state) {
+  time_training_steps(state, table1_config(state, state.range(0)), 1);
+}
+BENCHMARK(BM_Table1TrainingStep)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// 100 grasps from an untrained generator of each Table I config, its sampling settings, one
+// thread, encoder included: arg = model.
+void BM_Table1Sampling(benchmark::State& state) {
+  at::set_num_threads(1);
+  const TrainConfig config = table1_config(state, state.range(0));
+  torch::manual_seed(0);
+  const graspecmf::models::Generator model = graspecmf::models::make_generator(config);
+  model->eval();
+  std::vector<Eigen::Vector3d> cloud;
+  graspecmf::Rng rng(1);
+  for (int i = 0; i < 512; ++i) cloud.emplace_back(rng.normal(), rng.normal(), rng.normal());
+  for (Eigen::Vector3d& q : cloud) q *= 0.04;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        graspecmf::models::sample_grasps(*model, cloud, config, 100, config.sampling, 3));
+  }
+}
+BENCHMARK(BM_Table1Sampling)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

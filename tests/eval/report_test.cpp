@@ -24,6 +24,7 @@ EvaluationReport two_objects(bool baselines, bool success) {
   EvaluationReport r;
   r.model = "models/mugs";
   r.step = 48000;
+  r.parameters = 1234;
   r.settings = {"rkmk4", 20, 2.0, 8, {}};
   r.seed = 3;
   r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, 1.5, {}, {}, {}});
@@ -47,6 +48,7 @@ TEST(EvaluationReport, JsonHoldsTheObjectsAndTheirMeans) {
   const nlohmann::json j = to_json(two_objects(false, false));
   EXPECT_EQ(j["model"], "models/mugs");
   EXPECT_EQ(j["step"], 48000);
+  EXPECT_EQ(j["parameters"], 1234);
   EXPECT_EQ(j["sampling"]["clouds"], 8);
   EXPECT_EQ(j["sampling"]["reject_collisions"], false);
   ASSERT_EQ(j["objects"].size(), 2U);

@@ -48,13 +48,14 @@ const auto* const kOneThread = ::testing::AddGlobalTestEnvironment(new OneThread
 TEST(TrainConfig, BundledConfigsParseAndRoundTrip) {
   const fs::path configs = fs::path(GRASPECMF_DATA_DIR) / ".." / "configs";
   int bundled = 0;
-  for (const auto& entry : fs::directory_iterator(configs)) {
+  for (const auto& entry : fs::recursive_directory_iterator(configs)) {
+    if (!entry.is_regular_file()) continue;
     const TrainConfig c = read_train_config(entry.path());
     EXPECT_EQ(to_json(train_config_from_json(to_json(c))), to_json(c)) << entry.path();
     EXPECT_EQ(c.model.field.z_channels, c.model.encoder.out_channels) << entry.path();
     ++bundled;
   }
-  EXPECT_GE(bundled, 6);  // the folder was found and read
+  EXPECT_GE(bundled, 16);  // the folder and configs/table1 were found and read
   const TrainConfig paper = read_train_config(configs / "paper.json");
   EXPECT_EQ(paper.model.encoder.out_channels, 341);
   EXPECT_EQ(paper.model.encoder.k, 40);

@@ -65,6 +65,7 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
   EvaluationReport report;
   report.model = model_name;
   report.step = model.step;
+  for (const at::Tensor& p : model.model->parameters()) report.parameters += p.numel();
   report.settings = {o.sampling.solver, o.sampling.steps, o.sampling.guidance, o.sampling.clouds,
                      o.checks};
   report.seed = o.seed;

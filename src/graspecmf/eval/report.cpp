@@ -171,6 +171,7 @@ json to_json(const EvaluationReport& r) {
   const ReportSettings& s = r.settings;
   json j = {{"model", r.model},
             {"step", r.step},
+            {"parameters", r.parameters},
             {"sampling",
              {{"solver", s.solver},
               {"steps", s.steps},

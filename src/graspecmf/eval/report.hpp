@@ -49,6 +49,7 @@ struct ReportSettings {
 struct EvaluationReport {
   std::string model;  // the model folder
   std::int64_t step = 0;
+  std::int64_t parameters = 0;  // the model's trained numbers
   ReportSettings settings;
   std::uint64_t seed = 0;  // also the seed of the paired comparisons' bootstrap
   std::vector<ObjectResult> objects;
