@@ -4,7 +4,9 @@
 
 #include <csignal>
 #include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include "graspecmf/core/error.hpp"
 
@@ -17,7 +19,27 @@ TEST(IsolatedCall, ReturnsAndErrorsComplete) {
   int calls = 0;
   EXPECT_TRUE(run_isolated([&] { ++calls; }, milliseconds(10000)).completed);
   EXPECT_EQ(calls, 0);  // the child's effects stay in the child
-  EXPECT_TRUE(run_isolated([] { throw Error("refused"); }, milliseconds(10000)).completed);
+  const IsolatedOutcome refused = run_isolated([] { throw Error("refused"); }, milliseconds(10000));
+  EXPECT_TRUE(refused.completed);
+  EXPECT_EQ(refused.refusals, std::vector<std::string>{"refused"});
+}
+
+// Each finished call's Error message comes back (cut to 4096 bytes), empty for a call that
+// returned, also from a child that crashes later.
+TEST(IsolatedCall, RefusalsComeBackWithTheirMessages) {
+  const std::string long_message(10000, 'x');
+  const IsolatedOutcome outcome = run_isolated_steps(
+      5,
+      [&](std::size_t i) {
+        if (i == 1) throw Error("bad file 1");
+        if (i == 2) throw Error(long_message);
+        if (i == 4) std::raise(SIGSEGV);
+      },
+      milliseconds(10000));
+  EXPECT_FALSE(outcome.completed);
+  ASSERT_EQ(outcome.finished, 4U);
+  EXPECT_EQ(outcome.refusals,
+            (std::vector<std::string>{"", "bad file 1", long_message.substr(0, 4096), ""}));
 }
 
 TEST(IsolatedCall, CrashesAbortsAndHangsAreReportedNotSuffered) {
@@ -42,6 +64,7 @@ TEST(IsolatedCall, StepsShareOneChildAndReportWhereItEnded) {
       4, [](std::size_t) { std::this_thread::sleep_for(milliseconds(150)); }, milliseconds(400));
   EXPECT_TRUE(slow.completed) << slow.failure;  // 600 ms in all, under 400 ms each
   EXPECT_EQ(slow.finished, 4U);
+  EXPECT_EQ(slow.refusals, std::vector<std::string>(4));
   const IsolatedOutcome crash = run_isolated_steps(
       5,
       [](std::size_t i) {

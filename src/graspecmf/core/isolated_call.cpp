@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdint>
 #include <cstring>
 
 #include "graspecmf/core/error.hpp"
@@ -22,6 +23,28 @@ namespace {
 // Exit statuses of the child: the call completed, or threw something other than Error.
 constexpr int kCompleted = 0;
 constexpr int kOtherException = 3;
+// A refusal's message is cut to this many bytes on its way to the parent.
+constexpr std::uint32_t kMaxMessage = 4096;
+
+// Writes all size bytes to fd, or exits the child.
+void write_all(int fd, const char* data, std::size_t size) {
+  while (size > 0) {
+    const ssize_t n = ::write(fd, data, size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) ::_exit(kOtherException);
+    data += n;
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
+// Tells the parent that a call finished: a 4-byte length, then the Error's message (length 0
+// when the call returned).
+void report(int fd, const std::string& message) {
+  const auto length =
+      static_cast<std::uint32_t>(std::min<std::size_t>(message.size(), kMaxMessage));
+  write_all(fd, reinterpret_cast<const char*>(&length), sizeof length);
+  write_all(fd, message.data(), length);
+}
 
 [[noreturn]] void run_child(std::size_t count, const std::function<void(std::size_t)>& step,
                             int progress) {
@@ -35,15 +58,16 @@ constexpr int kOtherException = 3;
     ::dup2(null, STDERR_FILENO);
   }
   for (std::size_t i = 0; i < count; ++i) {
+    std::string message;
     try {
       step(i);
-    } catch (const Error&) {
-      // A clear refusal: the caller's own call will throw it again.
+    } catch (const Error& e) {
+      message = e.what();  // a clear refusal, passed on to the caller
+      if (message.empty()) message = "error";
     } catch (...) {
       ::_exit(kOtherException);
     }
-    const char done = 1;  // one byte per finished call tells the parent to restart its clock
-    if (::write(progress, &done, 1) != 1) ::_exit(kOtherException);
+    report(progress, message);  // also tells the parent to restart its clock
   }
   ::_exit(kCompleted);  // no atexit handlers or static destructors of the parent's state
 }
@@ -63,9 +87,9 @@ std::string describe(int status) {
 
 IsolatedOutcome run_isolated_steps(std::size_t count, const std::function<void(std::size_t)>& step,
                                    std::chrono::milliseconds step_timeout) {
-  // The child writes a byte to a pipe after each call and holds the write end until it exits, so
-  // the parent wakes the moment a call finishes or the child ends (poll sees the hang-up) instead
-  // of polling waitpid on a timer.
+  // The child writes a record to a pipe after each call and holds the write end until it exits,
+  // so the parent wakes the moment a call finishes or the child ends (poll sees the hang-up)
+  // instead of polling waitpid on a timer.
   int ends[2];
   if (::pipe(ends) != 0) {
     throw Error(std::string("cannot start a child process (") + std::strerror(errno) + ")");
@@ -83,6 +107,7 @@ IsolatedOutcome run_isolated_steps(std::size_t count, const std::function<void(s
   }
   ::close(ends[1]);
   IsolatedOutcome outcome;
+  std::string received;  // bytes of records not yet complete
   auto deadline = std::chrono::steady_clock::now() + step_timeout;
   bool ended = false;
   while (!ended) {
@@ -93,10 +118,16 @@ IsolatedOutcome run_isolated_steps(std::size_t count, const std::function<void(s
     if (::poll(&readable, 1, static_cast<int>(std::min<long long>(left.count(), 60000))) <= 0) {
       continue;
     }
-    char bytes[256];
+    char bytes[4096];
     const ssize_t n = ::read(ends[0], bytes, sizeof bytes);
-    if (n > 0) {
-      outcome.finished += static_cast<std::size_t>(n);
+    if (n > 0) received.append(bytes, static_cast<std::size_t>(n));
+    std::uint32_t length = 0;
+    while (received.size() >= sizeof length) {
+      std::memcpy(&length, received.data(), sizeof length);
+      if (received.size() < sizeof length + length) break;
+      outcome.refusals.push_back(received.substr(sizeof length, length));
+      received.erase(0, sizeof length + length);
+      ++outcome.finished;
       deadline = std::chrono::steady_clock::now() + step_timeout;
     }
     ended = n == 0 || (n < 0 && errno != EINTR);

@@ -233,22 +233,24 @@ std::chrono::seconds read_limit(const std::vector<fs::path>& paths) {
   return std::chrono::seconds(60 + largest / 10'000'000);
 }
 
-// Reads paths in child processes; entry i is empty when libhdf5 returned (a record or an Error)
-// on paths[i], else the Error message for the file it crashed or hung on.
-std::vector<std::string> library_failures(const std::vector<fs::path>& paths,
-                                          std::chrono::seconds limit) {
-  std::vector<std::string> failures(paths.size());
+// Reads paths in child processes; entry i is the Error message for paths[i] when the child's read
+// threw it or libhdf5 crashed or hung on the file, empty when the child read it.
+std::vector<std::string> child_refusals(const std::vector<fs::path>& paths,
+                                        std::chrono::seconds limit) {
+  std::vector<std::string> refusals(paths.size());
   for (std::size_t start = 0; start < paths.size();) {
     const IsolatedOutcome probe = run_isolated_steps(
         paths.size() - start, [&](std::size_t i) { read_acronym_file_here(paths[start + i]); },
         limit);
+    std::copy(probe.refusals.begin(), probe.refusals.end(),
+              refusals.begin() + static_cast<std::ptrdiff_t>(start));
     if (probe.completed) break;
     const std::size_t bad = start + probe.finished;
-    failures[bad] = paths[bad].string() + ": damaged HDF5 file (the HDF5 library " + probe.failure +
+    refusals[bad] = paths[bad].string() + ": damaged HDF5 file (the HDF5 library " + probe.failure +
                     " reading it)";
     start = bad + 1;
   }
-  return failures;
+  return refusals;
 }
 
 }  // namespace
@@ -258,18 +260,18 @@ AcronymGraspFile read_acronym_file(const fs::path& path) {
 }
 
 AcronymGraspFile read_acronym_file(const fs::path& path, std::chrono::seconds limit) {
-  const std::vector<std::string> failure = library_failures({path}, limit);
-  if (!failure[0].empty()) throw Error(failure[0]);
+  const std::vector<std::string> refusal = child_refusals({path}, limit);
+  if (!refusal[0].empty()) throw Error(refusal[0]);
   return read_acronym_file_here(path);
 }
 
 void read_acronym_files(const std::vector<fs::path>& paths,
                         const std::function<void(std::size_t, AcronymGraspFile&&)>& use,
                         const std::function<void(std::size_t, const std::string&)>& refuse) {
-  const std::vector<std::string> failures = library_failures(paths, read_limit(paths));
+  const std::vector<std::string> refusals = child_refusals(paths, read_limit(paths));
   for (std::size_t i = 0; i < paths.size(); ++i) {
-    if (!failures[i].empty()) {
-      refuse(i, failures[i]);
+    if (!refusals[i].empty()) {  // refused in the child: not read a second time
+      refuse(i, refusals[i]);
       continue;
     }
     std::optional<AcronymGraspFile> record;
