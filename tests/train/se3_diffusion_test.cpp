@@ -1,5 +1,6 @@
 // SE(3)-DiffusionFields' diffusion on energies whose answers are known: the noise scale's values,
-// a zero score-matching loss for the exact Gaussian energy, and Langevin descending to a minimum.
+// a zero score-matching loss for the exact Gaussian energy, Langevin descending to a minimum, and
+// the se3dif generator's distance-field term.
 
 #include "graspecmf/models/se3_diffusion.hpp"
 
@@ -10,6 +11,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/flow/so3.hpp"
+#include "graspecmf/models/se3dif_generator.hpp"
 
 namespace graspecmf::models {
 namespace {
@@ -92,6 +94,43 @@ TEST_F(Se3Diffusion, LangevinDescendsToTheMinimumAndIsSeeded) {
   EXPECT_LT((ya.R.transpose(1, 2).matmul(ya.R) - eye).abs().max().item<double>(), 1e-12);
   noisy.inner_steps = -1;
   EXPECT_THROW(annealed_langevin(energy, x0, noisy, a), Error);
+}
+
+}  // namespace
+}  // namespace graspecmf::models
+
+namespace graspecmf::models {
+namespace {
+
+// The se3dif generator's loss is the score-matching loss plus the mean |clip(ψ₀) − clip(d)| over
+// the distance queries, clipped at 7.5 cm (0.6 at × 8), at times drawn after the score-matching
+// draws. Checked in eval mode, where dropout draws nothing.
+TEST_F(Se3Diffusion, TheGeneratorAddsTheClippedDistanceLoss) {
+  torch::manual_seed(2);
+  Se3DifGenerator model(8.0, 1.0);
+  model.eval();
+  at::Generator make = flow::make_generator(4);
+  TrainingBatch batch;
+  batch.points = at::randn({2, 64, 3}, make);
+  batch.object_index = torch::tensor({0, 0, 1}, torch::kLong);
+  batch.grasps = flow::sample_prior(3, 1.0, make);
+  const TrainingBatch without = batch;
+  batch.distance_points = at::randn({2, 5, 3}, make);
+  batch.distances = torch::tensor({{0.0, 0.1, 0.59, 0.61, 5.0}, {0.2, 0.3, 0.0, 2.0, 0.05}});
+  at::Generator a = flow::make_generator(7), b = flow::make_generator(7);
+  const double with_distances = model.loss(batch, a).item<double>();
+  const double score_matching = model.loss(without, b).item<double>();
+  // b now stands where the distance term's draws begin.
+  const auto times = at::rand({2, 5}, b);
+  const auto z = model.encoder->forward(batch.points);
+  const auto predicted =
+      model.energy->features
+          ->forward(batch.distance_points, times, z.unsqueeze(1).expand({2, 5, z.size(1)}))
+          .select(-1, 0);
+  const double expected =
+      (predicted.clamp_max(0.6) - batch.distances.clamp_max(0.6)).abs().mean().item<double>();
+  EXPECT_GT(expected, 0.0);
+  EXPECT_NEAR(with_distances - score_matching, expected, 1e-6);
 }
 
 }  // namespace
