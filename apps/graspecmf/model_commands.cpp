@@ -227,9 +227,9 @@ void run_sample(const SampleArgs& a) {
   record.gripper_configuration = 0.5 * gripper::panda::kMaxOpening;
   record.object = input.info;
   data::write_acronym_file(record, a.out);
-  std::cout << fmt::format("{} grasps ({} {} steps, guidance {}{}) in {:.2f} s → {}\n", a.num,
-                           settings.solver, settings.steps, settings.guidance,
-                           eval::filter_note(a.checks), seconds, a.out);
+  std::cout << fmt::format("{} grasps ({}{}) in {:.2f} s → {}\n", a.num,
+                           trained.model->sampler(settings), eval::filter_note(a.checks), seconds,
+                           a.out);
 }
 
 // ---- evaluate ----

@@ -25,7 +25,7 @@ EvaluationReport two_objects(bool baselines, bool success) {
   r.model = "models/mugs";
   r.step = 48000;
   r.parameters = 1234;
-  r.settings = {"rkmk4", 20, 2.0, 8, {}};
+  r.settings = {"rkmk4-20, guidance 2", "rkmk4", 20, 2.0, 8, {}};
   r.seed = 3;
   r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, 1.5, {}, {}, {}});
   r.objects.push_back({"b", 40, {0.5, 0.5, 0.5}, 0.5, 0.5, {}, {}, {}});

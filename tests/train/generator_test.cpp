@@ -57,6 +57,7 @@ TEST_P(GeneratorBattery, DrawsRotationsAndPositionsOfTheRequestedCount) {
   EXPECT_LT((torch::matmul(x.R.transpose(1, 2), x.R) - identity).abs().max().item<double>(), 1e-4);
   EXPECT_TRUE(torch::isfinite(x.p).all().item<bool>());
   EXPECT_GT(model->parameters().size(), 0U);
+  EXPECT_FALSE(model->sampler(SamplingSettings{}).empty());
 }
 
 TEST_P(GeneratorBattery, ASeedGivesTheSameGrasps) {

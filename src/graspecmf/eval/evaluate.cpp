@@ -66,7 +66,11 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
   report.model = model_name;
   report.step = model.step;
   for (const at::Tensor& p : model.model->parameters()) report.parameters += p.numel();
-  report.settings = {o.sampling.solver, o.sampling.steps, o.sampling.guidance, o.sampling.clouds,
+  report.settings = {model.model->sampler(o.sampling),
+                     o.sampling.solver,
+                     o.sampling.steps,
+                     o.sampling.guidance,
+                     o.sampling.clouds,
                      o.checks};
   report.seed = o.seed;
   for (std::size_t i = 0; i < objects.size(); ++i) {

@@ -173,7 +173,8 @@ json to_json(const EvaluationReport& r) {
             {"step", r.step},
             {"parameters", r.parameters},
             {"sampling",
-             {{"solver", s.solver},
+             {{"sampler", s.sampler},
+              {"solver", s.solver},
               {"steps", s.steps},
               {"guidance", s.guidance},
               {"clouds", s.clouds},
@@ -283,9 +284,8 @@ std::string summary(const EvaluationReport& r) {
 
 std::string to_markdown(const EvaluationReport& r) {
   const ReportSettings& s = r.settings;
-  return fmt::format("# EMD of {} (step {}; {}-{}, guidance {}{})\n\n{}\n{}\n", r.model, r.step,
-                     s.solver, s.steps, s.guidance, filter_note(s.checks), markdown_table(r),
-                     summary(r));
+  return fmt::format("# EMD of {} (step {}; {}{})\n\n{}\n{}\n", r.model, r.step, s.sampler,
+                     filter_note(s.checks), markdown_table(r), summary(r));
 }
 
 }  // namespace graspecmf::eval

@@ -39,6 +39,7 @@ struct ObjectResult {
 
 // How the grasps were drawn.
 struct ReportSettings {
+  std::string sampler;  // the generator's own words (GeneratorImpl::sampler)
   std::string solver;
   int steps = 0;
   double guidance = 0.0;

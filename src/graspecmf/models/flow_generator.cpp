@@ -3,6 +3,7 @@
 #include <torch/torch.h>
 
 #include <algorithm>
+#include <sstream>
 
 #include "graspecmf/flow/loss.hpp"
 #include "graspecmf/flow/path.hpp"
@@ -13,6 +14,12 @@ namespace graspecmf::models {
 
 FlowGenerator::FlowGenerator(double prior_position_std, double cfg_drop)
     : prior_position_std_(prior_position_std), cfg_drop_(cfg_drop) {}
+
+std::string FlowGenerator::sampler(const SamplingSettings& settings) const {
+  std::ostringstream text;
+  text << settings.solver << '-' << settings.steps << ", guidance " << settings.guidance;
+  return text.str();
+}
 
 flow::PoseBatch FlowGenerator::draw(const Condition& condition, std::int64_t count,
                                     const SamplingSettings& settings,

@@ -29,6 +29,8 @@ class FlowGenerator : public GeneratorImpl {
   // geodesic path to the grasp and its velocity as the target; the condition is dropped with
   // probability cfg_drop. Draws x0, then t, then the keep mask from `generator`.
   at::Tensor loss(const TrainingBatch& batch, at::Generator& generator) const final;
+  // "<solver>-<steps>, guidance <w>".
+  std::string sampler(const SamplingSettings& settings) const final;
 
  protected:
   FlowGenerator(double prior_position_std, double cfg_drop);

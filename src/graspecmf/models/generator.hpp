@@ -47,6 +47,9 @@ class GeneratorImpl : public torch::nn::Module {
   // The training loss of a batch, differentiable in the parameters; random draws come from
   // `generator` (CPU).
   virtual at::Tensor loss(const TrainingBatch& batch, at::Generator& generator) const = 0;
+  // How draw makes grasps under `settings`, in a few words for reports (e.g. "rkmk4-20,
+  // guidance 2").
+  virtual std::string sampler(const SamplingSettings& settings) const = 0;
   // The device the parameters live on.
   c10::Device device() const;
 };

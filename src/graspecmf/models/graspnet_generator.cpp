@@ -78,6 +78,12 @@ at::Tensor GraspNetGenerator::control_points(const flow::PoseBatch& grasps) cons
   return grasp_control_points(grasps, position_scale_) / position_scale_;
 }
 
+std::string GraspNetGenerator::sampler(const SamplingSettings&) const {
+  return variant_ == Variant::kVae ? "a decoder pass per grasp, latents from N(0, I)"
+                                   : "a decoder pass per grasp, latents from U[0, 1)^" +
+                                         std::to_string(options_.latent_size);
+}
+
 flow::PoseBatch GraspNetGenerator::draw(const Condition& condition, std::int64_t count,
                                         const SamplingSettings&, at::Generator& generator) const {
   if (count < 0) throw Error("graspnet draw: negative count");

@@ -30,6 +30,8 @@ class GraspNetGenerator : public GeneratorImpl {
   // points in metres, confidence and KL terms). GAN: one U[0, 1) latent per true grasp, and the
   // IMLE loss of each object's predictions against its grasps, averaged over the objects.
   at::Tensor loss(const TrainingBatch& batch, at::Generator& generator) const override;
+  // "a decoder pass per grasp, latents from N(0, I)" (VAE) or "… U[0, 1)^L" (GAN).
+  std::string sampler(const SamplingSettings& settings) const override;
 
   nn::GraspNetBackbone decoder{nullptr};
   nn::GraspNetBackbone encoder{nullptr};  // the VAE's only

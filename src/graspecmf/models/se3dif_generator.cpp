@@ -34,6 +34,12 @@ Condition Se3DifGenerator::condition(const at::Tensor& clouds) const {
   return {{encoder->forward(clouds).mean(0, /*keepdim=*/true)}};
 }
 
+std::string Se3DifGenerator::sampler(const SamplingSettings&) const {
+  const LangevinSettings s;
+  return "annealed Langevin, " + std::to_string(s.annealed_steps) + " + " +
+         std::to_string(s.final_steps) + " levels × " + std::to_string(s.inner_steps) + " updates";
+}
+
 flow::PoseBatch Se3DifGenerator::draw(const Condition& condition, std::int64_t count,
                                       const SamplingSettings&, at::Generator& generator) const {
   if (count < 0) throw Error("se3dif draw: negative count");

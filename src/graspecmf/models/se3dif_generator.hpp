@@ -26,6 +26,8 @@ class Se3DifGenerator : public GeneratorImpl {
   // when the batch has distance targets, the mean |clip(ψ₀(q, k, z)) − clip(d)| over its queries,
   // k ~ U[0, 1] per query, both clipped to at most 7.5 cm (the reference's 0.6 at × 8).
   at::Tensor loss(const TrainingBatch& batch, at::Generator& generator) const override;
+  // "annealed Langevin, 70 + 50 levels × 2 updates".
+  std::string sampler(const SamplingSettings& settings) const override;
 
   nn::Se3DifEncoder encoder{nullptr};
   nn::Se3DifEnergy energy{nullptr};
