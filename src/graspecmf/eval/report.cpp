@@ -64,7 +64,7 @@ json comparison_json(const metrics::PairedComparison& c) {
 // The statistics the JSON and the summary share, computed once.
 struct Derived {
   bool baselines = false, success = false;
-  double mean_emd = 0, mean_random = 0, mean_nearest = 0;
+  double mean_random = 0, mean_nearest = 0;
   metrics::MeanInterval emd;                      // the mean over objects of their mean EMDs
   std::optional<metrics::MeanInterval> rate;      // the mean over objects of their success rates
   double seconds_per_100 = 0;                     // sampling wall time per 100 generated grasps
@@ -80,22 +80,18 @@ Derived derive(const EvaluationReport& r) {
   Derived d;
   d.baselines = all_have(r, &ObjectResult::baselines);
   d.success = all_have(r, &ObjectResult::success);
-  d.mean_emd = mean_over(r, [](const ObjectResult& o) { return o.mean_emd; });
-  std::vector<double> emds, rates;
+  std::vector<double> emds;
   double seconds = 0, grasps = 0;
   for (const ObjectResult& o : r.objects) {
     emds.push_back(o.mean_emd);
-    if (d.success) rates.push_back(o.success->all.rate());
     seconds += o.sampling_seconds;
     grasps += static_cast<double>(o.n * o.emd.size());
   }
   d.emd = metrics::bootstrap_mean(emds, r.seed);
-  if (d.success) d.rate = metrics::bootstrap_mean(rates, r.seed);
   d.seconds_per_100 = grasps > 0 ? 100 * seconds / grasps : 0;
   if (d.baselines) {
-    std::vector<double> model, nearest, floored_model, floored_nearest, floors;
+    std::vector<double> nearest, floored_model, floored_nearest, floors;
     for (const ObjectResult& o : r.objects) {
-      model.push_back(o.mean_emd);
       nearest.push_back(o.baselines->nearest_emd);
       if (o.baselines->floor_emd) {
         floored_model.push_back(o.mean_emd);
@@ -105,7 +101,7 @@ Derived derive(const EvaluationReport& r) {
     }
     d.mean_random = mean_over(r, [](const ObjectResult& o) { return o.baselines->random_emd; });
     d.mean_nearest = mean_over(r, [](const ObjectResult& o) { return o.baselines->nearest_emd; });
-    d.nearest = metrics::compare_paired(model, nearest, r.seed);
+    d.nearest = metrics::compare_paired(emds, nearest, r.seed);
     if (floors.size() == r.objects.size()) {
       d.mean_floor =
           std::accumulate(floors.begin(), floors.end(), 0.0) / static_cast<double>(floors.size());
@@ -115,10 +111,11 @@ Derived derive(const EvaluationReport& r) {
     }
   }
   if (d.success) {
-    std::vector<double> model_failures, nearest_failures;  // lower is better, as EMDs
+    std::vector<double> rates, model_failures, nearest_failures;  // failures: lower is better
     for (const ObjectResult& o : r.objects) {
       d.model_success += *o.success;
-      model_failures.push_back(1 - o.success->all.rate());
+      rates.push_back(o.success->all.rate());
+      model_failures.push_back(1 - rates.back());
       if (d.baselines) {
         if (!o.nearest_success) {
           throw Error("evaluation report: " + o.name + " lacks the nearest object's success");
@@ -127,6 +124,7 @@ Derived derive(const EvaluationReport& r) {
         nearest_failures.push_back(1 - o.nearest_success->all.rate());
       }
     }
+    d.rate = metrics::bootstrap_mean(rates, r.seed);
     if (d.baselines) {
       d.success_comparison = metrics::compare_paired(model_failures, nearest_failures, r.seed);
     }
@@ -183,7 +181,7 @@ json to_json(const EvaluationReport& r) {
               {"reject_shallow", s.checks.shallow}}},
             {"seed", r.seed},
             {"objects", objects},
-            {"mean_emd", d.mean_emd},
+            {"mean_emd", d.emd.mean},
             {"mean_emd_ci_95", {d.emd.low, d.emd.high}},
             {"sampling_seconds_per_100_grasps", d.seconds_per_100}};
   if (d.baselines) {
@@ -244,7 +242,7 @@ std::string summary(const EvaluationReport& r) {
   const std::size_t count = r.objects.size();
   std::string text =
       fmt::format("mean EMD over {} objects: {:.4f}, 95 % bootstrap interval [{:.4f}, {:.4f}]",
-                  count, d.mean_emd, d.emd.low, d.emd.high);
+                  count, d.emd.mean, d.emd.low, d.emd.high);
   if (d.baselines) {
     const metrics::PairedComparison& c = d.nearest;
     text += fmt::format(

@@ -73,19 +73,21 @@ models::TrainingBatch to_tensors(const std::vector<data::ObjectSample>& samples,
     const data::ObjectSample& s = samples[o];
     const auto n = static_cast<int64_t>(s.points.size() / 3);
     const auto g = static_cast<int64_t>(s.positions.size() / 3);
-    const auto k = static_cast<int64_t>(s.distances.size());
     points.push_back(copy(s.points, {n, 3}));
     rotations.push_back(copy(s.rotations, {g, 3, 3}));
     positions.push_back(copy(s.positions, {g, 3}));
     index.push_back(torch::full({g}, static_cast<int64_t>(o), torch::kLong));
-    queries.push_back(copy(s.distance_points, {k, 3}));
-    distances.push_back(copy(s.distances, {k}));
+    if (!s.distances.empty()) {  // the sampler drew distance targets
+      const auto k = static_cast<int64_t>(s.distances.size());
+      queries.push_back(copy(s.distance_points, {k, 3}));
+      distances.push_back(copy(s.distances, {k}));
+    }
   }
   models::TrainingBatch batch;
   batch.points = torch::stack(points).to(device);
   batch.object_index = torch::cat(index).to(device);
   batch.grasps = {torch::cat(rotations).to(device), torch::cat(positions).to(device)};
-  if (!samples.empty() && !samples[0].distances.empty()) {
+  if (!distances.empty()) {
     batch.distance_points = torch::stack(queries).to(device);
     batch.distances = torch::stack(distances).to(device);
   }
