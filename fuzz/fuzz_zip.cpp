@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "graspecmf/core/error.hpp"
-#include "graspecmf/core/zip_check.hpp"
+#include "graspecmf/core/zip_archive.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {

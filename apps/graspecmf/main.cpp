@@ -9,6 +9,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/heap_retention.hpp"
 #include "graspecmf/core/version.hpp"
+#include "convert_command.hpp"
 #include "inspect_command.hpp"
 #include "make_dataset_command.hpp"
 #include "prepare_mesh_command.hpp"
@@ -35,6 +36,7 @@ int main(int argc, char** argv) {
   graspecmf::apps::add_make_dataset_command(app);
   graspecmf::apps::add_prepare_mesh_command(app);
   graspecmf::apps::add_view_command(app);
+  graspecmf::apps::add_convert_command(app);
 #ifdef GRASPECMF_WITH_TORCH
   graspecmf::apps::add_model_commands(app);
 #endif

@@ -489,3 +489,42 @@ TEST(CliPrepareMesh, BadInput) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(CliConvert, TheSampleMugRoundTripsThroughIsaacYamlAndBackToHdf5) {
+  const ScratchDir dir;
+  const std::string yaml = (dir / "mug.yaml").string(), h5 = (dir / "mug.h5").string();
+  const CliRun to_yaml = run("convert " + sample_grasp_file().string() + " " + yaml, dir);
+  ASSERT_EQ(to_yaml.exit_code, 0) << to_yaml.err;
+  EXPECT_NE(to_yaml.out.find("2000 grasps, acronym → isaac; not kept: success labels (kept as "
+                             "scores), object motions, the object's mesh path and scale"),
+            std::string::npos)
+      << to_yaml.out;
+  // Back to ACRONYM's HDF5, which needs the object named.
+  expect_one_error_line(run("convert " + yaml + " " + h5, dir), "--object");
+  const CliRun back =
+      run("convert " + yaml + " " + h5 + " --object meshes/Mug/m.obj --scale 0.5", dir);
+  ASSERT_EQ(back.exit_code, 0) << back.err;
+  const graspecmf::data::AcronymGraspFile original =
+      graspecmf::data::read_acronym_file(sample_grasp_file());
+  const graspecmf::data::AcronymGraspFile record = graspecmf::data::read_acronym_file(h5);
+  ASSERT_EQ(record.size(), 2000u);
+  EXPECT_EQ(record.object.file, "meshes/Mug/m.obj");
+  EXPECT_EQ(record.object.scale, 0.5);
+  for (std::size_t i = 0; i < record.size(); ++i) {
+    ASSERT_LT((record.transforms[i] - original.transforms[i]).cwiseAbs().maxCoeff(), 1e-7) << i;
+  }
+}
+
+TEST(CliConvert, BadInput) {
+  const ScratchDir dir;
+  const std::string mug = sample_grasp_file().string();
+  expect_one_error_line(run("convert " + mug + " " + (dir / "x.csv").string(), dir), "extension");
+  expect_one_error_line(run("convert " + mug + " " + mug, dir), "is also the input");
+  expect_one_error_line(run("convert missing.npy " + (dir / "x.h5").string(), dir), "missing.npy");
+  EXPECT_NE(run("convert " + mug + " x.npy --graspnet-depth 0.5", dir).exit_code, 0);
+  EXPECT_FALSE(fs::exists("x.npy"));
+}
+
+}  // namespace

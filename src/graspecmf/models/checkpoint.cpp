@@ -9,7 +9,7 @@
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/fnv1a.hpp"
 #include "graspecmf/core/input_file.hpp"
-#include "graspecmf/core/zip_check.hpp"
+#include "graspecmf/core/zip_archive.hpp"
 
 namespace graspecmf::models {
 namespace fs = std::filesystem;

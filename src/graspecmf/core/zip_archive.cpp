@@ -1,10 +1,11 @@
-#include "graspecmf/core/zip_check.hpp"
+#include "graspecmf/core/zip_archive.hpp"
 
 #include <zlib.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <functional>
 
 #include "graspecmf/core/error.hpp"
 
@@ -140,14 +141,13 @@ std::uint32_t crc_of(std::string_view bytes) {
   return static_cast<std::uint32_t>(crc);
 }
 
-// Inflates a raw deflate stream, returning the CRC-32 of its output; fails unless the stream is
-// whole, uses all of data and inflates to exactly expected bytes.
-std::uint32_t inflated_crc(const ZipBytes& zip, const Entry& entry, std::string_view data) {
+// Inflates a raw deflate stream; fails unless the stream is whole, uses all of data and inflates
+// to exactly the entry's recorded size.
+std::string inflated(const ZipBytes& zip, const Entry& entry, std::string_view data) {
   z_stream stream{};
   if (inflateInit2(&stream, -MAX_WBITS) != Z_OK) zip.fail("zlib cannot start inflating");
   std::array<unsigned char, 1 << 16> buffer{};
-  uLong crc = crc32(0L, Z_NULL, 0);
-  std::uint64_t produced = 0;
+  std::string out;
   std::size_t consumed = 0;
   int status = Z_OK;
   while (status == Z_OK) {
@@ -158,16 +158,14 @@ std::uint32_t inflated_crc(const ZipBytes& zip, const Entry& entry, std::string_
     stream.avail_out = static_cast<uInt>(buffer.size());
     status = inflate(&stream, Z_NO_FLUSH);
     consumed += n - stream.avail_in;
-    const std::size_t out = buffer.size() - stream.avail_out;
-    crc = crc32(crc, buffer.data(), static_cast<uInt>(out));
-    produced += out;
-    if (produced > entry.size) break;
+    out.append(reinterpret_cast<const char*>(buffer.data()), buffer.size() - stream.avail_out);
+    if (out.size() > entry.size) break;
   }
   inflateEnd(&stream);
-  if (status != Z_STREAM_END || produced != entry.size || consumed != data.size()) {
+  if (status != Z_STREAM_END || out.size() != entry.size || consumed != data.size()) {
     zip.fail("entry '" + entry.name + "' does not inflate to its recorded size");
   }
-  return static_cast<std::uint32_t>(crc);
+  return out;
 }
 
 // A flag word in hexadecimal.
@@ -201,8 +199,8 @@ std::uint64_t read_entry(const ZipBytes& zip, std::uint64_t at, std::uint64_t en
   return next;
 }
 
-// Checks one entry's local header, bounds, size and CRC-32.
-void check_entry(const ZipBytes& zip, const Entry& entry, const Directory& dir) {
+// Checks one entry's local header, bounds, size and CRC-32; returns its contents.
+std::string checked_contents(const ZipBytes& zip, const Entry& entry, const Directory& dir) {
   const std::string quoted = "entry '" + entry.name + "'";
   // Allowed: deflate options (bits 1, 2), a data descriptor (3), UTF-8 names (11). Encryption
   // (0, 6, 13) and patch data (5) make readers refuse the entry, LibTorch's at a point it cannot
@@ -238,13 +236,14 @@ void check_entry(const ZipBytes& zip, const Entry& entry, const Directory& dir) 
   if (entry.method == 0 && entry.compressed != entry.size) {
     zip.fail(quoted + " is stored but its two recorded sizes differ");
   }
-  const std::uint32_t crc = entry.method == 0 ? crc_of(bytes) : inflated_crc(zip, entry, bytes);
-  if (crc != entry.crc) zip.fail(quoted + " does not match its CRC-32");
+  std::string contents = entry.method == 0 ? std::string(bytes) : inflated(zip, entry, bytes);
+  if (crc_of(contents) != entry.crc) zip.fail(quoted + " does not match its CRC-32");
+  return contents;
 }
 
-}  // namespace
-
-std::size_t check_zip_archive(std::string_view bytes, const std::string& what) {
+// Visits every entry of the archive with its checked contents, in central-directory order.
+void visit_entries(std::string_view bytes, const std::string& what,
+                   const std::function<void(const std::string&, std::string&&)>& visit) {
   const ZipBytes zip(bytes, what);
   const Directory dir = find_directory(zip);
   const std::uint64_t end = dir.offset + dir.size;
@@ -257,9 +256,75 @@ std::size_t check_zip_archive(std::string_view bytes, const std::string& what) {
                " GiB");
     }
     total += entry.size;
-    check_entry(zip, entry, dir);
+    visit(entry.name, checked_contents(zip, entry, dir));
   }
-  return static_cast<std::size_t>(dir.entries);
+}
+
+// Appends the n-byte little-endian value to out.
+void put(std::string& out, std::uint64_t value, int n) {
+  for (int i = 0; i < n; ++i) out.push_back(static_cast<char>((value >> (8 * i)) & 0xff));
+}
+
+}  // namespace
+
+std::size_t check_zip_archive(std::string_view bytes, const std::string& what) {
+  std::size_t count = 0;
+  visit_entries(bytes, what, [&](const std::string&, std::string&&) { ++count; });
+  return count;
+}
+
+std::vector<ZipEntry> read_zip_archive(std::string_view bytes, const std::string& what) {
+  std::vector<ZipEntry> entries;
+  visit_entries(bytes, what, [&](const std::string& name, std::string&& contents) {
+    entries.push_back({name, std::move(contents)});
+  });
+  return entries;
+}
+
+std::string stored_zip_archive(const std::vector<ZipEntry>& entries) {
+  std::string out, directory;
+  for (const ZipEntry& entry : entries) {
+    if (entry.contents.size() >= kZip64Marker || out.size() >= kZip64Marker ||
+        entry.name.size() > 0xffff) {
+      throw Error("ZIP entry '" + entry.name + "' is too large for a plain ZIP archive");
+    }
+    const std::uint32_t crc = crc_of(entry.contents);
+    // The header fields both records share: version, flags, method, time, date, CRC and sizes.
+    std::string common;
+    put(common, 20, 2);
+    put(common, 0, 2);
+    put(common, 0, 2);
+    put(common, 0, 2);
+    put(common, 0x21, 2);  // 1980-01-01: a fixed date keeps the archive reproducible
+    put(common, crc, 4);
+    put(common, entry.contents.size(), 4);
+    put(common, entry.contents.size(), 4);
+    put(common, entry.name.size(), 2);
+    put(common, 0, 2);
+    put(directory, kCentralSignature, 4);
+    put(directory, 20, 2);
+    directory += common;
+    put(directory, 0, 2 + 2 + 2 + 4);  // comment length, disk, internal and external attributes
+    put(directory, out.size(), 4);
+    directory += entry.name;
+    put(out, kLocalSignature, 4);
+    out += common;
+    out += entry.name;
+    out += entry.contents;
+  }
+  if (out.size() >= kZip64Marker || entries.size() >= 0xffff) {
+    throw Error("too much data for a plain ZIP archive");
+  }
+  const std::size_t directory_offset = out.size();
+  out += directory;
+  put(out, kEndSignature, 4);
+  put(out, 0, 4);  // this disk, the directory's disk
+  put(out, entries.size(), 2);
+  put(out, entries.size(), 2);
+  put(out, directory.size(), 4);
+  put(out, directory_offset, 4);
+  put(out, 0, 2);  // comment length
+  return out;
 }
 
 }  // namespace graspecmf
