@@ -18,16 +18,10 @@ struct ConvertArgs {
   int graspnet_object_id = 0;
 };
 
-formats::IsaacGripperFrame isaac_frame(const std::string& name) {
-  if (name == "auto") return formats::IsaacGripperFrame::automatic;
-  if (name == "acronym") return formats::IsaacGripperFrame::acronym;
-  return formats::IsaacGripperFrame::panda_hand;
-}
-
 void run(const ConvertArgs& a) {
   require_distinct_output("OUT", a.out, {a.in});
   formats::FormatOptions in_options, out_options;
-  in_options.isaac_gripper_frame = isaac_frame(a.isaac_frame);
+  in_options.isaac_gripper_frame = formats::parse_isaac_gripper_frame(a.isaac_frame);
   out_options.isaac_gripper_frame = in_options.isaac_gripper_frame;
   if (!a.from.empty()) in_options.format = formats::parse_format(a.from);
   if (!a.to.empty()) out_options.format = formats::parse_format(a.to);
@@ -63,8 +57,7 @@ void add_convert_command(CLI::App& app) {
       ".yaml, GraspNet .npy, Contact-GraspNet .npz)");
   cmd->add_option("in", a->in, "Input grasp file")->required();
   cmd->add_option("out", a->out, "Output grasp file")->required();
-  const std::vector<std::string> names{"acronym", "acronym-json", "json",
-                                       "isaac",   "graspnet",     "contact-graspnet"};
+  const std::vector<std::string> names = formats::format_names();
   cmd->add_option("--from", a->from, "Input format (default: by extension; .json by content)")
       ->check(CLI::IsMember(names));
   cmd->add_option("--to", a->to, "Output format (default: by extension)")

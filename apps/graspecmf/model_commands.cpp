@@ -12,25 +12,24 @@
 #include <optional>
 #include <vector>
 
-#include "bundled_model.hpp"
 #include "cli_checks.hpp"
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/output_paths.hpp"
 #include "graspecmf/core/progress.hpp"
-#include "graspecmf/core/random.hpp"
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/eval/evaluate.hpp"
+#include "graspecmf/formats/grasp_files.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/object_size.hpp"
 #include "graspecmf/geometry/point_cloud_io.hpp"
-#include "graspecmf/geometry/surface_sampling.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/gripper/panda.hpp"
+#include "graspecmf/models/bundled_model.hpp"
 #include "graspecmf/models/device.hpp"
-#include "graspecmf/models/grasp_sampling.hpp"
 #include "graspecmf/models/model_folder.hpp"
+#include "graspecmf/models/object_grasps.hpp"
 #include "graspecmf/sim/trial_config.hpp"
 #include "graspecmf/train/trainer.hpp"
 #include "object_units.hpp"
@@ -149,11 +148,9 @@ struct SampleArgs {
   std::uint64_t seed = 0;
 };
 
-// The object as sample sees it: the model's input cloud in metres, the points that
-// --reject-collisions and --reject-shallow check grasps against, and the record to write beside
-// the grasps.
+// The object as sample sees it (models::ObjectPoints) and the record to write beside the grasps.
 struct SampleInput {
-  std::vector<Eigen::Vector3d> cloud, filter_points;
+  models::ObjectPoints points;
   data::AcronymObjectInfo info;
 };
 
@@ -166,16 +163,9 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
     std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
     for (Eigen::Vector3d& p : cloud) p *= a.units.metres_per_unit();
     a.units.size.check(cloud, a.points);
-    if (a.checks.any()) input.filter_points = cloud;  // every point of the file
-    // A seeded subset when the file has more points than the model was trained with.
-    Rng rng(a.seed);
-    for (std::size_t i = 0; cloud.size() > points && i < points; ++i) {
-      std::swap(cloud[i], cloud[i + rng.index(cloud.size() - i)]);
-    }
-    cloud.resize(std::min(cloud.size(), points));
     info.file = a.points;
     info.scale = a.units.metres_per_unit();  // the output says how the file's units map to metres
-    input.cloud = std::move(cloud);
+    input.points = models::object_points(std::move(cloud), points, a.checks, a.seed);
     return input;
   }
   geometry::TriangleMesh mesh;
@@ -191,13 +181,12 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
         geometry::read_mesh(data::find_object_mesh(a.acronym, info.file, a.mesh_root)), info.scale);
     a.units.size.check(mesh.vertices, a.acronym + "'s object", geometry::ScaleSource::kFile);
   }
-  input.cloud = geometry::sample_surface(mesh, points, a.seed).points;
-  if (a.checks.any()) input.filter_points = gripper::filter_cloud(mesh, a.seed);
+  input.points = models::object_points(mesh, points, a.checks, a.seed);
   return input;
 }
 
 void run_sample(const SampleArgs& a) {
-  const fs::path model = model_or_bundled(a.model);
+  const fs::path model = models::model_or_bundled(a.model);
   std::vector<fs::path> inputs = models::model_folder_files(model);
   inputs.insert(inputs.end(), {a.mesh, a.points, a.acronym});
   require_distinct_output("--out", a.out, inputs);
@@ -205,28 +194,16 @@ void run_sample(const SampleArgs& a) {
   const models::TrainedModel trained =
       models::load_trained_model(model, models::parse_device(a.device));
   const models::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
-  const auto clouds = static_cast<std::size_t>(settings.clouds);
-  const auto points = static_cast<std::size_t>(trained.config.model.encoder.points);
-  const SampleInput input = sample_input(a, clouds * points);
-  const auto k = static_cast<std::size_t>(trained.config.model.encoder.k);
-  if (input.cloud.size() < clouds * k) {
-    throw Error(fmt::format("sample: the cloud has {} points; the model needs at least {}{}",
-                            input.cloud.size(), clouds * k,
-                            clouds > 1 ? fmt::format(" ({} per cloud)", k) : ""));
-  }
-  std::optional<gripper::CloudGraspFilter> filter;
-  if (a.checks.any()) filter.emplace(input.filter_points, a.checks);
+  const SampleInput input = sample_input(a, models::input_points(trained, settings));
   const auto start = std::chrono::steady_clock::now();
   const std::vector<lie::Pose> grasps =
-      models::sample_grasps(*trained.model, input.cloud, trained.config, a.num, settings, a.seed,
-                            filter ? &*filter : nullptr);
+      models::sample_object_grasps(trained, input.points, a.num, settings, a.checks, a.seed);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  data::AcronymGraspFile record;
-  for (const lie::Pose& g : grasps) record.transforms.push_back(g.matrix());
-  record.gripper_configuration = 0.5 * gripper::panda::kMaxOpening;
+  formats::GraspSet record;
+  for (const lie::Pose& g : grasps) record.poses.push_back(g.matrix());
   record.object = input.info;
-  data::write_acronym_file(record, a.out);
+  formats::write_grasps(record, a.out);
   std::cout << fmt::format("{} grasps ({}{}) in {:.2f} s → {}\n", a.num,
                            trained.model->sampler(settings), eval::filter_note(a.checks), seconds,
                            a.out);
@@ -282,7 +259,7 @@ std::vector<data::GraspObject> evaluation_objects(const EvaluateArgs& a) {
 }
 
 void run_evaluate(const EvaluateArgs& a) {
-  const std::string model = model_or_bundled(a.model).string();
+  const std::string model = models::model_or_bundled(a.model).string();
   std::vector<fs::path> inputs = models::model_folder_files(model);
   inputs.insert(inputs.end(), {a.acronym, a.sim_config});
   for (const auto& [option, out] : {std::pair{"--out", a.out}, {"--markdown", a.markdown}}) {
@@ -371,7 +348,11 @@ void add_model_commands(CLI::App& app) {
   sample_cmd->add_option("--seed", s->seed, "Seed for the cloud and the prior");
   sample_cmd->add_option("--threads", s->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   add_device_option(sample_cmd, s->device);
-  sample_cmd->add_option("--out", s->out, "Output grasps (.h5, ACRONYM layout)")->required();
+  sample_cmd
+      ->add_option("--out", s->out,
+                   "Output grasps: .h5 (ACRONYM), .json, .yaml (Isaac Sim), .npy (GraspNet) "
+                   "or .npz (Contact-GraspNet); docs/formats.md")
+      ->required();
   sample_cmd->callback([s] { run_sample(*s); });
 
   auto e = std::make_shared<EvaluateArgs>();

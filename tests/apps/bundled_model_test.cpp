@@ -3,7 +3,7 @@
 // to our simulator's successful grasps of that mesh, mostly hold in the simulator, and turn with
 // the mug. Fixed seeds; the bounds are set from measurement with margin (models/README.md).
 
-#include "../../apps/graspecmf/bundled_model.hpp"
+#include "graspecmf/models/bundled_model.hpp"
 
 #include <gtest/gtest.h>
 #include <torch/torch.h>
@@ -43,7 +43,7 @@ std::filesystem::path our_labels_file() {
 struct Gate : public ::testing::Test {
   static void SetUpTestSuite() { at::set_num_threads(1); }
 
-  models::TrainedModel model = models::load_trained_model(apps::bundled_model_dir());
+  models::TrainedModel model = models::load_trained_model(models::bundled_model_dir());
   geometry::TriangleMesh mesh =
       geometry::scaled(geometry::read_mesh(testing::sample_mesh_file()),
                        data::read_acronym_file(testing::sample_grasp_file()).object.scale);

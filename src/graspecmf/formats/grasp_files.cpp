@@ -43,6 +43,19 @@ std::string format_name(GraspFormat format) {
   return facts(format).name;
 }
 
+std::vector<std::string> format_names() {
+  std::vector<std::string> names;
+  for (const FormatFacts& f : kFormats) names.emplace_back(f.name);
+  return names;
+}
+
+IsaacGripperFrame parse_isaac_gripper_frame(const std::string& name) {
+  if (name == "auto") return IsaacGripperFrame::automatic;
+  if (name == "acronym") return IsaacGripperFrame::acronym;
+  if (name == "panda_hand") return IsaacGripperFrame::panda_hand;
+  throw Error("unknown isaac_grasp gripper frame '" + name + "' (auto, acronym or panda_hand)");
+}
+
 GraspFormat parse_format(const std::string& name) {
   std::string known;
   for (const FormatFacts& f : kFormats) {

@@ -20,6 +20,9 @@ enum class GraspFormat { acronym, acronym_json, json, isaac, graspnet, contact_g
 // file's gripper_frame field (ACRONYM's frame when it is absent) and writes panda_hand.
 enum class IsaacGripperFrame { automatic, acronym, panda_hand };
 
+// The frame named "auto", "acronym" or "panda_hand"; throws Error otherwise.
+IsaacGripperFrame parse_isaac_gripper_frame(const std::string& name);
+
 struct FormatOptions {
   std::optional<GraspFormat> format;  // unset: by extension (and, for .json, by content)
   IsaacGripperFrame isaac_gripper_frame = IsaacGripperFrame::automatic;
@@ -30,6 +33,8 @@ struct FormatOptions {
 // The format's command-line name ("acronym", "acronym-json", "json", "isaac", "graspnet",
 // "contact-graspnet").
 std::string format_name(GraspFormat format);
+// Every format's name, in the order of GraspFormat.
+std::vector<std::string> format_names();
 // The format named `name`; throws Error listing the names otherwise.
 GraspFormat parse_format(const std::string& name);
 // The format a file name implies: .h5/.hdf5 acronym, .json json, .yaml/.yml isaac, .npy graspnet,

@@ -95,6 +95,15 @@ void read_optional(const json& node, const char* key, const std::string& what,
   if (const json* value = member(node, key, what)) out = numbers(*value, key, what);
 }
 
+// The object's mesh path and scale when both are present as a string and a number.
+std::optional<data::AcronymObjectInfo> object_info(const json* file, const json* scale) {
+  if (!file || !scale || !file->is_string() || !scale->is_number()) return std::nullopt;
+  data::AcronymObjectInfo info;
+  info.file = file->get<std::string>();
+  info.scale = scale->get<double>();
+  return info;
+}
+
 std::string dumped(const json& document) {
   return document.dump(1) + "\n";
 }
@@ -120,13 +129,8 @@ GraspSet decode_acronym_json(std::string_view bytes, const std::string& what) {
     read_optional(document, kShakingAngularKey, what, q.motion_shaking_angular);
     grasps.qualities = std::move(q);
   }
-  const json* file = member(document, "object", what);
-  const json* scale = member(document, "object_scale", what);
-  if (file && scale && file->is_string() && scale->is_number()) {
-    grasps.object = data::AcronymObjectInfo{};
-    grasps.object->file = file->get<std::string>();
-    grasps.object->scale = scale->get<double>();
-  }
+  grasps.object =
+      object_info(member(document, "object", what), member(document, "object_scale", what));
   return grasps;
 }
 
@@ -167,13 +171,7 @@ GraspSet decode_plain_json(std::string_view bytes, const std::string& what) {
   read_optional(*block, "confidence", what, grasps.scores);
   read_optional(*block, "width", what, grasps.widths);
   if (const json* object = member(document, "object", what)) {
-    const json* file = member(*object, "file", what);
-    const json* scale = member(*object, "scale", what);
-    if (file && scale && file->is_string() && scale->is_number()) {
-      grasps.object = data::AcronymObjectInfo{};
-      grasps.object->file = file->get<std::string>();
-      grasps.object->scale = scale->get<double>();
-    }
+    grasps.object = object_info(member(*object, "file", what), member(*object, "scale", what));
   }
   return grasps;
 }

@@ -158,14 +158,18 @@ void validate(const TrainConfig& c) {
   if (c.validation_grasps < 1 || c.validation_grasps > 100000) {
     throw Error("train config: validation_grasps must be in [1, 100000]");
   }
-  flow::parse_solver(c.sampling.solver);
-  if (c.sampling.steps < 1 || c.sampling.steps > 10000) {
-    throw Error("train config: sampling steps must be in [1, 10000]");
+  try {
+    validate(c.sampling);
+  } catch (const Error& error) {
+    throw Error(std::string("train config: ") + error.what());
   }
-  if (!std::isfinite(c.sampling.guidance)) throw Error("train config: guidance must be finite");
-  if (c.sampling.clouds < 1 || c.sampling.clouds > 1024) {
-    throw Error("train config: sampling clouds must be in [1, 1024]");
-  }
+}
+
+void validate(const SamplingSettings& s) {
+  flow::parse_solver(s.solver);
+  if (s.steps < 1 || s.steps > 10000) throw Error("sampling steps must be in [1, 10000]");
+  if (!std::isfinite(s.guidance)) throw Error("guidance must be finite");
+  if (s.clouds < 1 || s.clouds > 1024) throw Error("sampling clouds must be in [1, 1024]");
 }
 
 json to_json(const TrainConfig& c) {

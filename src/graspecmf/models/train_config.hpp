@@ -78,6 +78,8 @@ double learning_rate_at(const TrainConfig& config, std::int64_t step);
 
 // Throws Error naming the first setting out of range.
 void validate(const TrainConfig& config);
+// Throws Error unless the solver is known, steps and clouds are in range and guidance is finite.
+void validate(const SamplingSettings& settings);
 nlohmann::json to_json(const TrainConfig& config);
 // Missing keys keep their defaults; an unknown key or a wrong type is an Error.
 TrainConfig train_config_from_json(const nlohmann::json& json);
