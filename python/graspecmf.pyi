@@ -86,6 +86,16 @@ def write_grasps(
 ) -> None:
     """Writes grasps atomically in the format of the extension (or format=)."""
 
+def write_acronym(
+    path: PathLike,
+    poses: npt.ArrayLike,
+    *,
+    object_file: str,
+    object_scale: float = 1.0,
+    success: Optional[npt.ArrayLike] = None,
+) -> None:
+    """write_grasps as an ACRONYM .h5 file."""
+
 def read_acronym(path: PathLike) -> GraspDict:
     """read_grasps for an ACRONYM .h5 file."""
 

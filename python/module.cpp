@@ -269,6 +269,33 @@ py::dict prepare_mesh(const std::filesystem::path& mesh,
   return d;
 }
 
+void write_grasps(const std::filesystem::path& path, const Array& poses_array,
+                  const std::optional<Array>& scores, const std::optional<Array>& widths,
+                  const std::optional<py::array_t<bool>>& success,
+                  const std::optional<std::string>& object_file, double object_scale,
+                  const std::optional<std::string>& format, const std::string& isaac_gripper_frame,
+                  double graspnet_depth, int graspnet_object_id) {
+  formats::GraspSet grasps;
+  grasps.poses = matrices(poses_array, "poses");
+  grasps.scores = doubles(scores, "scores");
+  grasps.widths = doubles(widths, "widths");
+  if (success) {
+    grasps.qualities = data::GraspQualities{};
+    for (py::ssize_t i = 0; i < success->size(); ++i) {
+      grasps.qualities->object_in_gripper.push_back(success->data()[i] ? 1 : 0);
+    }
+  }
+  if (object_file) {
+    grasps.object = data::AcronymObjectInfo{};
+    grasps.object->file = *object_file;
+    grasps.object->scale = object_scale;
+  }
+  const formats::FormatOptions options =
+      format_options(format, isaac_gripper_frame, graspnet_depth, graspnet_object_id);
+  py::gil_scoped_release release;
+  formats::write_grasps(grasps, path, options);
+}
+
 }  // namespace
 
 PYBIND11_MODULE(graspecmf, m) {
@@ -320,41 +347,26 @@ PYBIND11_MODULE(graspecmf, m) {
       "Contact-GraspNet .npz; docs/formats.md) into a dict: poses (N, 4, 4) in the ACRONYM "
       "Panda gripper frame, and when the file has them scores, widths, success, the object "
       "motions, object_file and object_scale.");
+  m.def("write_grasps", &write_grasps, py::arg("path"), py::arg("poses"), py::kw_only(),
+        py::arg("scores") = py::none(), py::arg("widths") = py::none(),
+        py::arg("success") = py::none(), py::arg("object_file") = py::none(),
+        py::arg("object_scale") = 1.0, py::arg("format") = py::none(),
+        py::arg("isaac_gripper_frame") = "auto", py::arg("graspnet_depth") = 0.01,
+        py::arg("graspnet_object_id") = 0,
+        "Writes (N, 4, 4) poses in the ACRONYM Panda gripper frame, atomically, in the format of "
+        "the extension (or format=); ACRONYM .h5 needs object_file.");
   m.def(
-      "write_grasps",
+      "write_acronym",
       [](const std::filesystem::path& path, const Array& poses_array,
-         const std::optional<Array>& scores, const std::optional<Array>& widths,
-         const std::optional<py::array_t<bool>>& success,
-         const std::optional<std::string>& object_file, double object_scale,
-         const std::optional<std::string>& format, const std::string& isaac_gripper_frame,
-         double graspnet_depth, int graspnet_object_id) {
-        formats::GraspSet grasps;
-        grasps.poses = matrices(poses_array, "poses");
-        grasps.scores = doubles(scores, "scores");
-        grasps.widths = doubles(widths, "widths");
-        if (success) {
-          grasps.qualities = data::GraspQualities{};
-          for (py::ssize_t i = 0; i < success->size(); ++i) {
-            grasps.qualities->object_in_gripper.push_back(success->data()[i] ? 1 : 0);
-          }
-        }
-        if (object_file) {
-          grasps.object = data::AcronymObjectInfo{};
-          grasps.object->file = *object_file;
-          grasps.object->scale = object_scale;
-        }
-        const formats::FormatOptions options =
-            format_options(format, isaac_gripper_frame, graspnet_depth, graspnet_object_id);
-        py::gil_scoped_release release;
-        formats::write_grasps(grasps, path, options);
+         const std::string& object_file, double object_scale,
+         const std::optional<py::array_t<bool>>& success) {
+        write_grasps(path, poses_array, std::nullopt, std::nullopt, success, object_file,
+                     object_scale, "acronym", "auto", 0.01, 0);
       },
-      py::arg("path"), py::arg("poses"), py::kw_only(), py::arg("scores") = py::none(),
-      py::arg("widths") = py::none(), py::arg("success") = py::none(),
-      py::arg("object_file") = py::none(), py::arg("object_scale") = 1.0,
-      py::arg("format") = py::none(), py::arg("isaac_gripper_frame") = "auto",
-      py::arg("graspnet_depth") = 0.01, py::arg("graspnet_object_id") = 0,
-      "Writes (N, 4, 4) poses in the ACRONYM Panda gripper frame, atomically, in the format of "
-      "the extension (or format=); ACRONYM .h5 needs object_file.");
+      py::arg("path"), py::arg("poses"), py::kw_only(), py::arg("object_file"),
+      py::arg("object_scale") = 1.0, py::arg("success") = py::none(),
+      "write_grasps as an ACRONYM .h5 file: poses T_object_gripper in metres in the frame of "
+      "object_file's mesh × object_scale.");
   m.def(
       "emd",
       [](const Array& a, const Array& b) {

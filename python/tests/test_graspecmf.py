@@ -81,6 +81,16 @@ def test_every_format_round_trips(tmp_path):
         assert np.array_equal(labels, mug["success"]), name
 
 
+def test_write_acronym_keeps_poses_labels_and_object(tmp_path):
+    mug = graspecmf.read_acronym(GRASPS)
+    graspecmf.write_acronym(tmp_path / "m.h5", mug["poses"], object_file="m.obj",
+                            object_scale=0.5, success=mug["success"])
+    back = graspecmf.read_acronym(tmp_path / "m.h5")
+    assert np.array_equal(back["poses"], mug["poses"])
+    assert np.array_equal(back["success"], mug["success"])
+    assert (back["object_file"], back["object_scale"]) == ("m.obj", 0.5)
+
+
 def test_numpy_reads_what_graspecmf_writes(tmp_path):
     mug = graspecmf.read_acronym(GRASPS)
     graspecmf.write_grasps(tmp_path / "g.npy", mug["poses"][:5], graspnet_depth=0.02)
