@@ -86,6 +86,11 @@ TEST(Npy, BadArraysGetOneClearError) {
       "malformed array shape");
   const std::string whole = npy("{'descr': '<f8', 'fortran_order': False, 'shape': (1,), }", eight);
   expect_error([&] { parse_npy(whole.substr(0, 20), "x"); }, "truncated");
+  // Found by fuzz_grasps: a version-2 file too short for its 4-byte header length (the fuzz
+  // input's first byte selects the GraspNet decoder).
+  const std::string found =
+      testing::read_file(testing::fuzz_regression("grasps", "npy_version2_short_header"));
+  expect_error([&] { parse_npy(std::string_view(found).substr(1), "x"); }, "truncated .npy header");
 }
 
 }  // namespace

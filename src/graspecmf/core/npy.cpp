@@ -63,6 +63,7 @@ NpyArray parse_npy(std::string_view bytes, const std::string& what) {
   const int major = static_cast<unsigned char>(bytes[6]);
   if (major < 1 || major > 3) throw fail("unknown .npy format version " + std::to_string(major));
   const std::size_t length_bytes = major == 1 ? 2 : 4;
+  if (bytes.size() < 8 + length_bytes) throw fail("truncated .npy header");
   std::size_t header_length = 0;
   for (std::size_t i = 0; i < length_bytes; ++i) {
     header_length |= static_cast<std::size_t>(static_cast<unsigned char>(bytes[8 + i])) << (8 * i);
