@@ -180,10 +180,13 @@ struct PyGraspModel {
       models::ObjectPoints object;
       if (mesh) {
         const geometry::TriangleMesh metric = geometry::scaled(geometry::read_mesh(*mesh), metres);
-        if (!allow_any_size) geometry::require_plausible_size(metric.vertices, mesh->string());
+        if (!allow_any_size)
+          geometry::require_plausible_size(metric.vertices, mesh->string(),
+                                           geometry::ScaleSource::kKeywords);
         object = models::object_points(metric, count, checks, seed);
       } else {
-        if (!allow_any_size) geometry::require_plausible_size(cloud, "points");
+        if (!allow_any_size)
+          geometry::require_plausible_size(cloud, "points", geometry::ScaleSource::kKeywords);
         object = models::object_points(std::move(cloud), count, checks, seed);
       }
       grasps = models::sample_object_grasps(model, object, num, settings, checks, seed);
@@ -204,7 +207,9 @@ py::dict simulate(const std::filesystem::path& mesh, const Array& grasps, double
   {
     py::gil_scoped_release release;
     const geometry::TriangleMesh open = geometry::scaled(geometry::read_mesh(mesh), metres);
-    if (!allow_any_size) geometry::require_plausible_size(open.vertices, mesh.string());
+    if (!allow_any_size)
+      geometry::require_plausible_size(open.vertices, mesh.string(),
+                                       geometry::ScaleSource::kKeywords);
     geometry::ClosedMeshOptions closing;
     closing.repair = repair;
     const geometry::ClosedMesh closed =

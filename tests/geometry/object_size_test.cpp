@@ -48,6 +48,17 @@ TEST(ObjectSize, WrongUnitsNameTheLikelyOne) {
   EXPECT_NE(tiny.find("--scale 50 would make it 10 cm"), std::string::npos) << tiny;
 }
 
+// The Python module's callers get its keywords, not the command's flags.
+TEST(ObjectSize, KeywordCallersGetKeywordHints) {
+  const std::string mm = size_error(101.0, ScaleSource::kKeywords);
+  EXPECT_NE(mm.find("give units='mm' (or scale=0.001), which makes it 10.1 cm"), std::string::npos)
+      << mm;
+  EXPECT_NE(mm.find("or allow_any_size=True to go on"), std::string::npos) << mm;
+  EXPECT_EQ(mm.find("--"), std::string::npos) << mm;
+  const std::string tiny = size_error(0.002, ScaleSource::kKeywords);
+  EXPECT_NE(tiny.find("scale=50 would make it 10 cm"), std::string::npos) << tiny;
+}
+
 TEST(ObjectSize, UnitNames) {
   EXPECT_DOUBLE_EQ(metres_per_unit("mm"), 0.001);
   EXPECT_DOUBLE_EQ(metres_per_unit("in"), 0.0254);

@@ -50,6 +50,10 @@ void require_plausible_size(const std::vector<Vec3>& points, const std::string& 
   if (points.empty()) return;
   const double size = largest_side(points);
   if (size >= kMinObjectSize && size <= kMaxObjectSize) return;
+  // How the caller spells the options: command-line flags or Python keywords.
+  const bool keywords = source == ScaleSource::kKeywords;
+  const std::string units = keywords ? "units='{0}'" : "--units {0}";
+  const std::string scale = keywords ? "scale={:.3g}" : "--scale {:.3g}";
   // The unit that, read instead of metres, puts the size nearest 10 cm (in log scale) and in range.
   std::string hint;
   double best = INFINITY;
@@ -59,11 +63,11 @@ void require_plausible_size(const std::vector<Vec3>& points, const std::string& 
     const double distance = std::abs(std::log(metric / 0.1));
     if (distance < best) {
       best = distance;
-      hint = source == ScaleSource::kOptions
-                 ? fmt::format(
-                       "; if it is in {0}, give --units {0} (or --scale {1:g}), which "
-                       "makes it {2}",
-                       unit.name, unit.metres, length_text(metric))
+      hint = source != ScaleSource::kFile
+                 ? fmt::format(fmt::runtime("; if it is in {0}, give " + units + " (or " +
+                                            (keywords ? "scale={1:g}" : "--scale {1:g}") +
+                                            "), which makes it {2}"),
+                               unit.name, unit.metres, length_text(metric))
                  : fmt::format(
                        "; the file's scale is likely off by {0:g} (the mesh in {1}), "
                        "which would make it {2}",
@@ -71,15 +75,14 @@ void require_plausible_size(const std::vector<Vec3>& points, const std::string& 
     }
   }
   if (hint.empty() && size > 0.0) {
-    hint = source == ScaleSource::kOptions
-               ? fmt::format("; --scale {:.3g} would make it 10 cm", 0.1 / size)
+    hint = source != ScaleSource::kFile
+               ? fmt::format(fmt::runtime("; " + scale + " would make it 10 cm"), 0.1 / size)
                : fmt::format("; check the file's scale (×{:.3g} would make it 10 cm)", 0.1 / size);
   }
-  throw Error(
-      fmt::format("{} is {} across, {} than a graspable object ({} to {}){}, or "
-                  "--allow-any-size to go on",
-                  what, length_text(size), size < kMinObjectSize ? "smaller" : "larger",
-                  length_text(kMinObjectSize), length_text(kMaxObjectSize), hint));
+  throw Error(fmt::format(
+      "{} is {} across, {} than a graspable object ({} to {}){}, or {} to go on", what,
+      length_text(size), size < kMinObjectSize ? "smaller" : "larger", length_text(kMinObjectSize),
+      length_text(kMaxObjectSize), hint, keywords ? "allow_any_size=True" : "--allow-any-size"));
 }
 
 }  // namespace graspecmf::geometry

@@ -28,14 +28,15 @@ double metres_per_unit(const std::string& name);
 // The largest side of the axis-aligned bounding box of points (0 for none).
 double largest_side(const std::vector<Vec3>& points);
 
-// Where a wrong size comes from, for the error's suggestion: options the user gives (--units,
-// --scale), or a scale stored in a file (ACRONYM's /object/scale).
-enum class ScaleSource { kOptions, kFile };
+// Where a wrong size comes from, for the error's suggestion: command-line options the user gives
+// (--units, --scale), the Python module's keywords (units=, scale=), or a scale stored in a file
+// (ACRONYM's /object/scale).
+enum class ScaleSource { kOptions, kKeywords, kFile };
 
 // Throws Error unless the points' largest side (metres) is a plausible object size. The one-line
 // message names `what` and the size, suggests the unit that would bring it into range (as --units
-// and --scale, or as a factor on the file's scale), and mentions --allow-any-size. Does nothing
-// for an empty set.
+// and --scale or their keywords, or as a factor on the file's scale), and mentions
+// --allow-any-size (allow_any_size=True for keywords). Does nothing for an empty set.
 void require_plausible_size(const std::vector<Vec3>& points, const std::string& what,
                             ScaleSource source = ScaleSource::kOptions);
 
