@@ -5,7 +5,7 @@
 include(CMakePackageConfigHelpers)
 
 get_property(layers GLOBAL PROPERTY GRASPECMF_LAYERS)
-set(torch_free_layers core lie geometry metrics viz gripper data sim dataset formats)
+set(torch_free_layers core lie geometry metrics viz gripper data sim dataset formats camera)
 
 add_library(graspecmf_torch_free INTERFACE)
 add_library(graspecmf_all INTERFACE)

@@ -119,8 +119,8 @@ TEST(PointCloudIo, BadFilesAreOneClearError) {
   const std::string whole = npy_of<double>(kPoints, "<f8");
   write_file(dir / "cut.npy", whole.substr(0, whole.size() - 1));
   EXPECT_THROW(read_point_cloud(dir / "cut.npy"), Error);
-  write_file(dir / "int.npy", npy("<i4", "(1, 3)", std::string(12, '\0')));
-  EXPECT_THROW(read_point_cloud(dir / "int.npy"), Error);
+  write_file(dir / "big_endian.npy", npy(">f4", "(1, 3)", std::string(12, '\0')));
+  EXPECT_THROW(read_point_cloud(dir / "big_endian.npy"), Error);
   write_file(dir / "huge.xyz", "");  // sparse, over the input cap: refused by its size
   std::filesystem::resize_file(dir / "huge.xyz", kMaxInputFileBytes + 1);
   EXPECT_THROW(read_point_cloud(dir / "huge.xyz"), Error);

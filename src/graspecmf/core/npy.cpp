@@ -10,12 +10,38 @@
 namespace graspecmf {
 namespace {
 
-// The little-endian float or double stored at data.
-template <typename Float>
+// The little-endian number of type T stored at data, as a double.
+template <typename T>
 double load(const char* data) {
-  Float value;
-  std::memcpy(&value, data, sizeof(Float));
+  T value;
+  std::memcpy(&value, data, sizeof(T));
   return static_cast<double>(value);
+}
+
+// An element type NumPy writes, by its descr: bytes per value and how to read one.
+struct NpyType {
+  std::size_t width = 0;  // 0: not a type graspecmf reads
+  bool integral = false;
+  double (*load)(const char*) = nullptr;
+};
+
+NpyType npy_type(const std::string& descr) {
+  struct Entry {
+    const char* descr;
+    NpyType type;
+  };
+  static const Entry kTypes[] = {
+      {"'<f4'", {4, false, load<float>}},       {"'<f8'", {8, false, load<double>}},
+      {"'|b1'", {1, true, load<std::uint8_t>}}, {"'|u1'", {1, true, load<std::uint8_t>}},
+      {"'|i1'", {1, true, load<std::int8_t>}},  {"'<u2'", {2, true, load<std::uint16_t>}},
+      {"'<i2'", {2, true, load<std::int16_t>}}, {"'<u4'", {4, true, load<std::uint32_t>}},
+      {"'<i4'", {4, true, load<std::int32_t>}}, {"'<u8'", {8, true, load<std::uint64_t>}},
+      {"'<i8'", {8, true, load<std::int64_t>}},
+  };
+  for (const Entry& entry : kTypes) {
+    if (descr == entry.descr) return entry.type;
+  }
+  return {};
 }
 
 // The value of `key` in a header dictionary such as "{'descr': '<f8', ...}": the text after
@@ -77,13 +103,15 @@ NpyArray parse_npy(std::string_view bytes, const std::string& what) {
   if (descr == "'|O'") {
     throw fail("holds pickled Python objects, not numbers (graspecmf reads only numeric arrays)");
   }
-  const std::size_t width = descr == "'<f4'" ? 4 : descr == "'<f8'" ? 8 : 0;
+  const NpyType type = npy_type(descr);
+  const std::size_t width = type.width;
   if (width == 0) {
-    throw fail(".npy data must be little-endian float32 or float64, not " +
+    throw fail(".npy data must be little-endian numbers (float, integer or bool), not " +
                (descr.empty() ? std::string("an unnamed type") : descr));
   }
   if (header_value(header, "fortran_order") != "False") throw fail(".npy data must be in C order");
   NpyArray array;
+  array.integral = type.integral;
   array.shape = parse_shape(header_value(header, "shape"), fail);
   const std::size_t data_bytes = bytes.size() - data_start;
   std::size_t count = 1;
@@ -98,7 +126,7 @@ NpyArray parse_npy(std::string_view bytes, const std::string& what) {
   array.values.resize(data_bytes / width);
   const char* data = bytes.data() + data_start;
   for (std::size_t i = 0; i < array.values.size(); ++i) {
-    array.values[i] = width == 4 ? load<float>(data + 4 * i) : load<double>(data + 8 * i);
+    array.values[i] = type.load(data + width * i);
   }
   return array;
 }

@@ -1,6 +1,6 @@
 #pragma once
-// NumPy .npy arrays of floating-point numbers held in memory: a validating parser (float32 or
-// float64, little endian, C order, any shape) and a float64 writer.
+// NumPy .npy arrays of numbers held in memory: a validating parser (little-endian float32/64,
+// integers of 1 to 8 bytes or bools, C order, any shape; read as float64) and a float64 writer.
 
 #include <cstddef>
 #include <string>
@@ -13,10 +13,11 @@ namespace graspecmf {
 struct NpyArray {
   std::vector<std::size_t> shape;
   std::vector<double> values;
+  bool integral = false;  // the file held integers or bools (parse_npy)
 };
 
 // Parses .npy bytes (format versions 1 to 3). Throws Error "<what>: <why>" unless they hold a
-// little-endian float32 or float64 array in C order whose data matches its shape; an array of
+// little-endian numeric or bool array in C order whose data matches its shape; an array of
 // Python objects (NumPy's pickled 'O' type) is refused with a message that says so.
 NpyArray parse_npy(std::string_view bytes, const std::string& what);
 
