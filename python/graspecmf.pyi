@@ -5,7 +5,7 @@ approach axis, the fingers close along x, the pad centre is 0.1034 m along z (do
 """
 
 import os
-from typing import Optional, TypedDict, Union
+from typing import Dict, Optional, TypedDict, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -46,6 +46,32 @@ class GraspModel:
         """num grasps (num, 4, 4) for one object, in the input's frame in metres (coordinates ×
         scale, as ACRONYM stores grasps). Give points (an (N, 3) array or a cloud file) or mesh (a
         mesh file); coordinates × scale (or units 'mm', 'cm', 'm', 'in') must be metres."""
+    def sample_view(
+        self,
+        *,
+        depth: Union[PathLike, npt.ArrayLike],
+        intrinsics: Union[PathLike, Dict[str, float]],
+        mask: Union[None, PathLike, npt.ArrayLike] = None,
+        camera_pose: Union[None, PathLike, npt.ArrayLike] = None,
+        table: str = "none",
+        depth_unit: float = 0.001,
+        voxel: float = 0.002,
+        num: int = 100,
+        seed: int = 0,
+        solver: Optional[str] = None,
+        steps: Optional[int] = None,
+        guidance: Optional[float] = None,
+        clouds: Optional[int] = None,
+        reject_collisions: bool = False,
+        reject_shallow: bool = False,
+        refine: bool = False,
+        allow_any_size: bool = False,
+    ) -> Poses:
+        """num grasps (num, 4, 4) for the object one depth camera sees (graspecmf sample --depth):
+        depth a 16-bit PNG (depth_unit metres per unit) or .npy file, or an (H, W) array in metres;
+        intrinsics a .json/.yaml file or a dict with fx, fy, cx, cy; mask non-zero on the object;
+        camera_pose T_base_camera (4 x 4); table 'none', 'auto' or 'a,b,c,d'. Grasps are in the
+        camera frame, or the base frame with camera_pose, and none reaches below the table."""
     @property
     def path(self) -> str: ...
     @property

@@ -11,6 +11,9 @@
 #include <optional>
 #include <string>
 
+#include "graspecmf/camera/camera_pose.hpp"
+#include "graspecmf/camera/depth_image.hpp"
+#include "graspecmf/camera/view_input.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/version.hpp"
 #include "graspecmf/formats/grasp_files.hpp"
@@ -137,6 +140,88 @@ py::dict grasp_dict(formats::GraspSet&& grasps) {
   return out;
 }
 
+gripper::GraspChecks checks_of(bool reject_collisions, bool reject_shallow, bool refine) {
+  gripper::GraspChecks checks;
+  checks.collisions = reject_collisions;
+  checks.shallow = reject_shallow;
+  checks.refine = refine;
+  return checks;
+}
+
+Array pose_array(const std::vector<lie::Pose>& grasps) {
+  std::vector<Eigen::Matrix4d> Ts;
+  for (const lie::Pose& g : grasps) Ts.push_back(g.matrix());
+  return matrix_array(Ts);
+}
+
+bool is_path(const py::object& value) {
+  return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__");
+}
+
+// The values of a 2-D array, row-major, with its height and width.
+std::vector<double> image_values(const py::object& value, const std::string& what, int& height,
+                                 int& width) {
+  const Array array = py::cast<Array>(value);
+  if (array.ndim() != 2 || array.shape(0) == 0 || array.shape(1) == 0 ||
+      array.shape(0) > (1 << 14) || array.shape(1) > (1 << 14)) {
+    throw Error(what + " must be an array of shape (height, width)");
+  }
+  height = static_cast<int>(array.shape(0));
+  width = static_cast<int>(array.shape(1));
+  return {array.data(), array.data() + array.size()};
+}
+
+// A depth image file (16-bit PNG in units of depth_unit, .npy) or an (H, W) array in metres.
+camera::DepthImage depth_of(const py::object& depth, double depth_unit) {
+  if (is_path(depth)) {
+    return camera::read_depth_image(py::cast<std::filesystem::path>(depth), depth_unit);
+  }
+  int height = 0, width = 0;
+  const std::vector<double> values = image_values(depth, "depth", height, width);
+  return camera::depth_from_values(values, height, width, 1.0, "depth");
+}
+
+// Intrinsics from a file (.json, ROS .yaml) or a dict with fx, fy, cx, cy.
+camera::Intrinsics intrinsics_of(const py::object& value) {
+  if (is_path(value)) return camera::read_intrinsics(py::cast<std::filesystem::path>(value));
+  if (!py::isinstance<py::dict>(value)) {
+    throw Error("intrinsics must be a file or a dict with fx, fy, cx and cy");
+  }
+  const py::dict d = py::cast<py::dict>(value);
+  for (const char* key : {"fx", "fy", "cx", "cy"}) {
+    if (!d.contains(key)) throw Error(std::string("intrinsics: missing ") + key);
+  }
+  camera::Intrinsics k;
+  k.fx = py::cast<double>(d["fx"]);
+  k.fy = py::cast<double>(d["fy"]);
+  k.cx = py::cast<double>(d["cx"]);
+  k.cy = py::cast<double>(d["cy"]);
+  camera::validate(k, "intrinsics");
+  return k;
+}
+
+// No mask (None), a mask file, or an (H, W) array non-zero on the object.
+std::vector<std::uint8_t> mask_of(const py::object& value, int width, int height) {
+  if (value.is_none()) return {};
+  if (is_path(value))
+    return camera::read_mask(py::cast<std::filesystem::path>(value), width, height);
+  int mask_height = 0, mask_width = 0;
+  const std::vector<double> values = image_values(value, "mask", mask_height, mask_width);
+  return camera::mask_from_values(values, mask_height, mask_width, width, height, "mask");
+}
+
+// The identity (None), a camera-pose file, or a 4 × 4 array T_base_camera.
+lie::Pose camera_pose_of(const py::object& value) {
+  if (value.is_none()) return {};
+  if (is_path(value)) return camera::read_camera_pose(py::cast<std::filesystem::path>(value));
+  const Array array = py::cast<Array>(value);
+  if (array.ndim() != 2 || array.shape(0) != 4 || array.shape(1) != 4) {
+    throw Error("camera_pose must be a 4 x 4 array");
+  }
+  return camera::camera_pose_from_matrix(
+      Eigen::Map<const Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(array.data()), "camera_pose");
+}
+
 // The model handle Python holds.
 struct PyGraspModel {
   std::filesystem::path path;
@@ -153,6 +238,19 @@ struct PyGraspModel {
     return out;
   }
 
+  // The model's sampling settings with the keyword overrides.
+  models::SamplingSettings settings_with(const std::optional<std::string>& solver,
+                                         std::optional<int> steps, std::optional<double> guidance,
+                                         std::optional<int> clouds) const {
+    models::SamplingSettings settings = model.config.sampling;
+    if (solver) settings.solver = *solver;
+    if (steps) settings.steps = *steps;
+    if (guidance) settings.guidance = *guidance;
+    if (clouds) settings.clouds = *clouds;
+    models::validate(settings);
+    return settings;
+  }
+
   Array sample(const py::object& points, const std::optional<std::filesystem::path>& mesh,
                double scale, const std::optional<std::string>& units, std::size_t num,
                std::uint64_t seed, const std::optional<std::string>& solver,
@@ -160,16 +258,8 @@ struct PyGraspModel {
                bool reject_collisions, bool reject_shallow, bool refine,
                bool allow_any_size) const {
     if (points.is_none() == !mesh) throw Error("give exactly one of points or mesh");
-    models::SamplingSettings settings = model.config.sampling;
-    if (solver) settings.solver = *solver;
-    if (steps) settings.steps = *steps;
-    if (guidance) settings.guidance = *guidance;
-    if (clouds) settings.clouds = *clouds;
-    models::validate(settings);
-    gripper::GraspChecks checks;
-    checks.collisions = reject_collisions;
-    checks.shallow = reject_shallow;
-    checks.refine = refine;
+    const models::SamplingSettings settings = settings_with(solver, steps, guidance, clouds);
+    const gripper::GraspChecks checks = checks_of(reject_collisions, reject_shallow, refine);
     const double metres = metres_per_unit(units, scale);
     const std::size_t count = models::input_points(model, settings);
     std::vector<Vec3> cloud;
@@ -191,9 +281,43 @@ struct PyGraspModel {
       }
       grasps = models::sample_object_grasps(model, object, num, settings, checks, seed);
     }
-    std::vector<Eigen::Matrix4d> Ts;
-    for (const lie::Pose& g : grasps) Ts.push_back(g.matrix());
-    return matrix_array(Ts);
+    return pose_array(grasps);
+  }
+
+  Array sample_view(const py::object& depth, const py::object& intrinsics, const py::object& mask,
+                    const py::object& camera_pose, const std::string& table, double depth_unit,
+                    double voxel, std::size_t num, std::uint64_t seed,
+                    const std::optional<std::string>& solver, std::optional<int> steps,
+                    std::optional<double> guidance, std::optional<int> clouds,
+                    bool reject_collisions, bool reject_shallow, bool refine,
+                    bool allow_any_size) const {
+    const models::SamplingSettings settings = settings_with(solver, steps, guidance, clouds);
+    const gripper::GraspChecks checks = checks_of(reject_collisions, reject_shallow, refine);
+    const camera::DepthImage image = depth_of(depth, depth_unit);
+    const camera::Intrinsics k = intrinsics_of(intrinsics);
+    const std::vector<std::uint8_t> object_mask = mask_of(mask, image.width, image.height);
+    const lie::Pose pose = camera_pose_of(camera_pose);
+    camera::ViewOptions options;
+    if (!(voxel >= 0.0 && voxel <= 0.05)) throw Error("voxel must be in [0, 0.05] m");
+    options.voxel = voxel;
+    camera::set_table(options, table, "table");
+    std::vector<lie::Pose> grasps;
+    {
+      py::gil_scoped_release release;
+      camera::ViewPoints view = camera::view_points(image, k, object_mask, pose, options, seed);
+      if (!allow_any_size) {
+        camera::check_view_size(view.object, "depth", [](bool) {
+          return std::string(
+              "check depth_unit (a 16-bit PNG's unit) and that a float array is in "
+              "metres, or pass allow_any_size=True");
+        });
+      }
+      const models::ObjectPoints object = models::object_points(
+          std::move(view), static_cast<std::size_t>(model.config.model.encoder.points),
+          static_cast<std::size_t>(settings.clouds), checks, seed);
+      grasps = models::sample_object_grasps(model, object, num, settings, checks, seed);
+    }
+    return pose_array(grasps);
   }
 };
 
@@ -329,6 +453,22 @@ PYBIND11_MODULE(graspecmf, m) {
            "(+z approach, fingers close along x, pad centre 0.1034 m along z; docs/gripper.md). "
            "solver/steps/guidance/clouds override the model's sampling settings; "
            "reject_collisions, reject_shallow and refine are the command line's grasp filters.")
+      .def("sample_view", &PyGraspModel::sample_view, py::kw_only(), py::arg("depth"),
+           py::arg("intrinsics"), py::arg("mask") = py::none(), py::arg("camera_pose") = py::none(),
+           py::arg("table") = "none", py::arg("depth_unit") = 0.001, py::arg("voxel") = 0.002,
+           py::arg("num") = 100, py::arg("seed") = 0, py::arg("solver") = py::none(),
+           py::arg("steps") = py::none(), py::arg("guidance") = py::none(),
+           py::arg("clouds") = py::none(), py::arg("reject_collisions") = false,
+           py::arg("reject_shallow") = false, py::arg("refine") = false,
+           py::arg("allow_any_size") = false,
+           "Generates num grasps for the object one depth camera sees, as `graspecmf sample "
+           "--depth` does (docs/camera.md). depth: a 16-bit PNG (units of depth_unit metres) or "
+           ".npy file, or an (H, W) array in metres (0 and NaN: no reading); intrinsics: a .json "
+           "or ROS .yaml file or a dict with fx, fy, cx, cy; mask: a PNG/.npy file or an (H, W) "
+           "array, non-zero on the object; camera_pose: a .json file or a 4 x 4 array "
+           "T_base_camera; table: 'none', 'auto' (fitted) or 'a,b,c,d' in the output frame; no "
+           "grasp reaches below it. Returns an (num, 4, 4) array of T_output_gripper in metres, "
+           "in the camera frame or, with camera_pose, the base frame.")
       .def_property_readonly("path", [](const PyGraspModel& self) { return self.path; })
       .def_property_readonly("type",
                              [](const PyGraspModel& self) { return self.model.config.model.type; })

@@ -6,13 +6,14 @@
 #include <iostream>
 #include <string>
 
+#include "convert_command.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/heap_retention.hpp"
 #include "graspecmf/core/version.hpp"
-#include "convert_command.hpp"
 #include "inspect_command.hpp"
 #include "make_dataset_command.hpp"
 #include "prepare_mesh_command.hpp"
+#include "render_view_command.hpp"
 #ifdef GRASPECMF_WITH_TORCH
 #include "blas_kernels.hpp"
 #include "model_commands.hpp"
@@ -37,6 +38,7 @@ int main(int argc, char** argv) {
   graspecmf::apps::add_prepare_mesh_command(app);
   graspecmf::apps::add_view_command(app);
   graspecmf::apps::add_convert_command(app);
+  graspecmf::apps::add_render_view_command(app);
 #ifdef GRASPECMF_WITH_TORCH
   graspecmf::apps::add_model_commands(app);
 #endif

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli_checks.hpp"
+#include "depth_input.hpp"
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/output_paths.hpp"
@@ -140,6 +141,9 @@ void add_filter_flags(CLI::App* cmd, gripper::GraspChecks& checks, const std::st
 struct SampleArgs {
   std::string model, mesh, points, acronym, mesh_root, out;
   ObjectUnits units;
+  DepthInput view;
+  std::string object_mesh;  // recorded as the output's object for --points and --depth
+  double object_scale = 1.0;
   SamplingOverrides sampling;
   gripper::GraspChecks checks;
   std::size_t num = 100;
@@ -154,17 +158,39 @@ struct SampleInput {
   data::AcronymObjectInfo info;
 };
 
-SampleInput sample_input(const SampleArgs& a, std::size_t points) {
-  const int sources = !a.mesh.empty() + !a.points.empty() + !a.acronym.empty();
-  if (sources != 1) throw Error("sample: give exactly one of --mesh, --points or --acronym");
+// points_per_cloud × clouds: the model's input points.
+SampleInput sample_input(const SampleArgs& a, std::size_t points_per_cloud, std::size_t clouds) {
+  const std::size_t points = points_per_cloud * clouds;
+  const int sources = !a.mesh.empty() + !a.points.empty() + !a.acronym.empty() + a.view.given();
+  if (sources != 1) {
+    throw Error("sample: give exactly one of --mesh, --points, --acronym or --depth");
+  }
+  if (!a.object_mesh.empty() && a.points.empty() && !a.view.given()) {
+    throw Error("sample: --object-mesh is for --points and --depth (a mesh input records itself)");
+  }
   SampleInput input;
   data::AcronymObjectInfo& info = input.info;
+  if (a.view.given()) {
+    if (!a.units.units.empty() || a.units.scale != 1.0) {
+      throw Error(
+          "sample: --units and --scale do not apply to --depth (its unit is fixed by the "
+          "file: millimetres in a PNG unless --depth-unit, metres in a float .npy)");
+    }
+    camera::ViewPoints view = a.view.read(a.seed);
+    if (!a.units.size.allow_any_size) a.view.check_size(view.object);
+    info.file = a.object_mesh.empty() ? a.view.depth : a.object_mesh;
+    info.scale = a.object_mesh.empty() ? 1.0 : a.object_scale;
+    input.points =
+        models::object_points(std::move(view), points_per_cloud, clouds, a.checks, a.seed);
+    return input;
+  }
   if (!a.points.empty()) {
     std::vector<Eigen::Vector3d> cloud = geometry::read_point_cloud(a.points);
     for (Eigen::Vector3d& p : cloud) p *= a.units.metres_per_unit();
     a.units.size.check(cloud, a.points);
-    info.file = a.points;
-    info.scale = a.units.metres_per_unit();  // the output says how the file's units map to metres
+    // The output says how the file's units map to metres.
+    info.file = a.object_mesh.empty() ? a.points : a.object_mesh;
+    info.scale = a.object_mesh.empty() ? a.units.metres_per_unit() : a.object_scale;
     input.points = models::object_points(std::move(cloud), points, a.checks, a.seed);
     return input;
   }
@@ -188,13 +214,16 @@ SampleInput sample_input(const SampleArgs& a, std::size_t points) {
 void run_sample(const SampleArgs& a) {
   const fs::path model = models::model_or_bundled(a.model);
   std::vector<fs::path> inputs = models::model_folder_files(model);
-  inputs.insert(inputs.end(), {a.mesh, a.points, a.acronym});
+  inputs.insert(inputs.end(), {a.mesh, a.points, a.acronym, a.object_mesh});
+  for (const fs::path& file : a.view.files()) inputs.push_back(file);
   require_distinct_output("--out", a.out, inputs);
   at::set_num_threads(a.threads);
   const models::TrainedModel trained =
       models::load_trained_model(model, models::parse_device(a.device));
   const models::SamplingSettings settings = a.sampling.apply(trained.config.sampling);
-  const SampleInput input = sample_input(a, models::input_points(trained, settings));
+  const SampleInput input =
+      sample_input(a, static_cast<std::size_t>(trained.config.model.encoder.points),
+                   static_cast<std::size_t>(settings.clouds));
   const auto start = std::chrono::steady_clock::now();
   const std::vector<lie::Pose> grasps =
       models::sample_object_grasps(trained, input.points, a.num, settings, a.checks, a.seed);
@@ -214,7 +243,7 @@ void run_sample(const SampleArgs& a) {
 struct EvaluateArgs {
   std::string model, data, split = "test", acronym, mesh_root, out, markdown, train_data;
   std::string sim_config, cache;  // for --success
-  bool baselines = false;
+  bool baselines = false, views = false, table = false;
   SizeCheck size;  // of an --acronym object
   gripper::GraspChecks checks;
   SamplingOverrides sampling;
@@ -283,6 +312,8 @@ void run_evaluate(const EvaluateArgs& a) {
   options.num = a.num;
   options.success = a.success;
   options.checks = a.checks;
+  if (a.views) options.input.views = camera::ViewSampling();
+  options.input.table = a.table;
   options.sampling = a.sampling.apply(trained.config.sampling);
   options.seed = a.seed;
   options.threads = a.threads;
@@ -337,6 +368,16 @@ void add_model_commands(CLI::App& app) {
   sample_cmd->add_option("--mesh", s->mesh, "Object mesh (.obj/.stl/.ply/.glb/.gltf)");
   sample_cmd->add_option("--points", s->points, "Point cloud (.xyz/.txt/.npy/.ply)");
   s->units.add_options(sample_cmd);
+  s->view.add_options(sample_cmd);
+  sample_cmd->add_option("--object-mesh", s->object_mesh,
+                         "With --points or --depth: the object's mesh, in the output frame, to "
+                         "record in the output so that simulate and view can use it (default: "
+                         "the input file is recorded)");
+  sample_cmd
+      ->add_option("--object-scale", s->object_scale,
+                   "Metres per unit of --object-mesh (recorded as its scale)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
   sample_cmd->add_option("--acronym", s->acronym, "ACRONYM grasp file naming the object");
   sample_cmd->add_option("--mesh-root", s->mesh_root, "Folder the ACRONYM file's mesh is in");
   sample_cmd->add_option("--num", s->num, "Grasps to generate (at most 10^6)")
@@ -372,6 +413,11 @@ void add_model_commands(CLI::App& app) {
   eval_cmd->add_option("--seed", e->seed, "Seed for clouds, references and the prior");
   eval_cmd->add_option("--threads", e->threads, "LibTorch threads")->check(CLI::Range(1, 256));
   add_device_option(eval_cmd, e->device);
+  eval_cmd->add_flag("--views", e->views,
+                     "Give the model one random camera's noisy view of each object per rotation "
+                     "instead of its whole surface (docs/camera.md)");
+  eval_cmd->add_flag("--table", e->table,
+                     "Keep the grasps above the table the object stands on (its lowest z)");
   eval_cmd->add_flag("--baselines", e->baselines,
                      "Also report random grasps, the nearest training object's grasps and the "
                      "sampling floor (two disjoint draws of the object's own grasps; needs 2n)");

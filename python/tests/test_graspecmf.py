@@ -1,10 +1,13 @@
 """Tests of the graspecmf Python module: shapes, frames, round trips and errors, on the ACRONYM
 sample mug (a test object, never trained on) with fixed seeds."""
 
+import json
 import os
 import pathlib
+import struct
 import subprocess
 import sys
+import zlib
 
 import numpy as np
 import pytest
@@ -16,6 +19,7 @@ SAMPLE = ROOT / "data" / "acronym-sample"
 MESH = SAMPLE / "meshes" / "Mug" / "10f6e09036350e92b3f21f1137c3c347.obj"
 GRASPS = SAMPLE / "grasps" / "Mug_10f6e09036350e92b3f21f1137c3c347_0.0002682457830986903.h5"
 SCALE = 0.0002682457830986903
+VIEW = ROOT / "data" / "camera" / "mug-view"
 
 
 @pytest.fixture(scope="module")
@@ -45,6 +49,53 @@ def test_sample_matches_the_command(model, tmp_path):
     ours = model.sample(mesh=MESH, scale=SCALE, num=20, seed=3)
     # The command may pick other BLAS kernels (apps/graspecmf/blas_kernels.cpp): equal to rounding.
     assert np.abs(cli - ours).max() < 1e-6
+
+
+def _gray_png(path):
+    """A grayscale PNG as written by graspecmf (filter type 0 on every row) as an (H, W) array."""
+    data = pathlib.Path(path).read_bytes()
+    chunks, at = {}, 8
+    while at < len(data):
+        length = struct.unpack(">I", data[at:at + 4])[0]
+        kind = data[at + 4:at + 8]
+        chunks[kind] = chunks.get(kind, b"") + data[at + 8:at + 8 + length]
+        at += 12 + length
+    width, height, bits = struct.unpack(">IIB", chunks[b"IHDR"][:9])
+    raw = zlib.decompress(chunks[b"IDAT"])
+    row = 1 + width * bits // 8
+    rows = [raw[i * row + 1:(i + 1) * row] for i in range(height)]
+    dtype = ">u2" if bits == 16 else "u1"
+    return np.frombuffer(b"".join(rows), dtype=dtype).reshape(height, width).astype(np.float64)
+
+
+def test_sample_view_matches_the_command_and_takes_arrays(model, tmp_path):
+    files = dict(depth=VIEW / "depth.png", intrinsics=VIEW / "intrinsics.json",
+                 mask=VIEW / "mask.png", camera_pose=VIEW / "camera_pose.json")
+    ours = model.sample_view(**files, table="auto", num=12, seed=2)
+    assert ours.shape == (12, 4, 4)
+    exe = pathlib.Path(graspecmf.__file__).parents[1] / "apps" / "graspecmf" / "graspecmf"
+    if exe.exists():
+        out = tmp_path / "cli.h5"
+        subprocess.run([str(exe), "sample", "--depth", str(files["depth"]), "--intrinsics",
+                        str(files["intrinsics"]), "--mask", str(files["mask"]), "--camera-pose",
+                        str(files["camera_pose"]), "--table", "auto", "--num", "12", "--seed", "2",
+                        "--threads", "1", "--out", str(out)], check=True, capture_output=True)
+        assert np.abs(graspecmf.read_grasps(out)["poses"] - ours).max() < 1e-6
+    # The same view as arrays: depth in metres, a boolean mask, K as a dict, the pose as 4 x 4.
+    with open(files["intrinsics"]) as f:
+        k = json.load(f)
+    with open(files["camera_pose"]) as f:
+        pose = np.array(json.load(f)["matrix"])
+    arrays = model.sample_view(depth=_gray_png(files["depth"]) * 0.001, intrinsics=k,
+                               mask=_gray_png(files["mask"]) > 0, camera_pose=pose, table="auto",
+                               num=12, seed=2)
+    assert np.abs(arrays - ours).max() < 1e-9
+    with pytest.raises(graspecmf.Error, match="the mask is 4 × 3 pixels"):
+        model.sample_view(**dict(files, mask=np.ones((3, 4))), num=1)
+    with pytest.raises(graspecmf.Error, match="intrinsics: missing cy"):
+        model.sample_view(**dict(files, intrinsics={"fx": 615, "fy": 615, "cx": 319.5}), num=1)
+    with pytest.raises(graspecmf.Error, match="larger than a graspable object.*depth_unit"):
+        model.sample_view(**files, depth_unit=0.1, num=1)  # decimetres read as the PNG's unit
 
 
 def test_points_in_millimetres_give_the_same_grasps_as_metres(model):

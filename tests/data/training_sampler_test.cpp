@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -207,6 +208,77 @@ TEST(TrainingSampler, RestoredStateGivesTheSameSteps) {
   EXPECT_THROW(b.restore("5 2 0 9\nxx"), Error);
 }
 
+// The object-frame points of a sample (undoing rotation, centring and scale).
+std::vector<Eigen::Vector3d> object_points(const ObjectSample& s) {
+  std::vector<Eigen::Vector3d> points;
+  for (std::size_t i = 0; i < s.points.size() / 3; ++i) {
+    points.push_back(s.rotation.transpose() * (at(s.points, i) / s.scale + s.centroid));
+  }
+  return points;
+}
+
+// Points well inside the box's face x = 0 (axis 0, side 0) or x = size (side 1), etc.
+std::size_t on_face(const std::vector<Eigen::Vector3d>& points, double size, int axis, int side) {
+  std::size_t count = 0;
+  for (const Eigen::Vector3d& q : points) {
+    bool inside = std::abs(q[axis] - side * size) < 0.002;
+    for (int other = 0; other < 3; ++other) {
+      if (other != axis) inside = inside && q[other] > 0.008 && q[other] < size - 0.008;
+    }
+    count += inside;
+  }
+  return count;
+}
+
+TEST(TrainingSampler, PartialInputIsWhatOneCameraAboveSees) {
+  TrainingSamplerOptions options;
+  options.objects_per_step = 3;
+  options.grasps_per_object = 2;
+  options.points = 256;
+  options.input = CloudInput::partial;
+  options.augmentation = Augmentation::so3;
+  TrainingSampler sampler(boxes(3, 2), options, 11);
+  for (int step = 0; step < 4; ++step) {
+    for (const ObjectSample& s : sampler.next_step()) {
+      ASSERT_EQ(s.points.size(), 3u * 256u);
+      const double size = 0.05 + 0.01 * static_cast<double>(s.object);
+      const std::vector<Eigen::Vector3d> points = object_points(s);
+      std::vector<double> off;
+      for (const Eigen::Vector3d& q : points) off.push_back(box_distance(q, size));
+      std::sort(off.begin(), off.end());
+      EXPECT_LT(off[off.size() / 2], 0.002);  // the camera's noise: about 1.3 mm
+      EXPECT_LT(off[off.size() * 95 / 100], 0.005);
+      // Never the bottom, on the table; the top from above; of each pair of opposite sides, at
+      // most the one facing the camera.
+      EXPECT_EQ(on_face(points, size, 2, 0), 0u);
+      EXPECT_GT(on_face(points, size, 2, 1), 10u);
+      for (int axis = 0; axis < 2; ++axis) {
+        EXPECT_EQ(std::min(on_face(points, size, axis, 0), on_face(points, size, axis, 1)), 0u);
+      }
+    }
+  }
+  // Mixed: about half the clouds are partial (none on the bottom), the others whole.
+  options.input = CloudInput::mixed;
+  options.objects_per_step = 40;
+  TrainingSampler mixed(boxes(3, 2), options, 12);
+  std::size_t partial = 0;
+  for (const ObjectSample& s : mixed.next_step()) {
+    partial += on_face(object_points(s), 0.05 + 0.01 * static_cast<double>(s.object), 2, 0) == 0;
+  }
+  EXPECT_GT(partial, 10u);
+  EXPECT_LT(partial, 30u);
+  // Resuming continues the same views.
+  const std::string saved = mixed.state();
+  const std::vector<ObjectSample> expected = mixed.next_step();
+  TrainingSampler again(boxes(3, 2), options, 99);
+  again.restore(saved);
+  const std::vector<ObjectSample> got = again.next_step();
+  for (std::size_t i = 0; i < got.size(); ++i) EXPECT_EQ(got[i].points, expected[i].points);
+  EXPECT_EQ(parse_cloud_input("mixed"), CloudInput::mixed);
+  EXPECT_EQ(to_string(CloudInput::partial), "partial");
+  EXPECT_THROW(parse_cloud_input("half"), Error);
+}
+
 TEST(TrainingSampler, RejectsUnusableInput) {
   EXPECT_THROW(TrainingSampler({}, {}, 1), Error);
   std::vector<GraspObject> objects = boxes(2, 3);
@@ -215,6 +287,10 @@ TEST(TrainingSampler, RejectsUnusableInput) {
   TrainingSamplerOptions zero;
   zero.points = 0;
   EXPECT_THROW(TrainingSampler(boxes(1, 1), zero, 1), Error);
+  TrainingSamplerOptions views;
+  views.input = CloudInput::partial;
+  views.views.max_distance = 9.0;
+  EXPECT_THROW(TrainingSampler(boxes(1, 1), views, 1), Error);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -185,6 +186,33 @@ TEST(CloudGraspFilter, RejectsBadCloudsAndEmptyChecks) {
   EXPECT_THROW(CloudGraspFilter({Vec3(0, std::nan(""), 0)}, kCollisions), Error);
   EXPECT_THROW(CloudGraspFilter({Vec3::Zero()}, kCollisions, 0.2), Error);
   EXPECT_THROW(CloudGraspFilter({Vec3::Zero()}, GraspChecks{}), Error);
+}
+
+// A table at z = 0 under a small box: a top-down grasp whose fingertips would go below the table
+// is rejected with or without other checks, and refinement lifts it clear.
+TEST(CloudGraspFilterSupport, NoHandReachesBelowTheTable) {
+  std::vector<Vec3> box;
+  for (int i = 0; i <= 10; ++i) {
+    for (int j = 0; j <= 10; ++j) box.emplace_back(-0.02 + 0.004 * i, -0.02 + 0.004 * j, 0.04);
+  }
+  const geometry::Plane table{Vec3::UnitZ(), 0.0};
+  const auto top_down = [](double height) {
+    lie::Pose grasp;
+    grasp.R = Eigen::AngleAxisd(M_PI, Vec3::UnitX()).toRotationMatrix();  // approach −z
+    grasp.p = Vec3(0.3, 0.0, height);  // beside the box: only the table is in reach
+    return grasp;
+  };
+  const CloudGraspFilter filter(box, GraspChecks{}, panda::kMaxOpening, table);
+  EXPECT_TRUE(filter.keeps(top_down(panda::kFingertipZ + 0.01)));
+  EXPECT_FALSE(filter.keeps(top_down(panda::kFingertipZ - 0.005)));
+  EXPECT_TRUE(filter.in_collision(top_down(panda::kFingertipZ - 0.005)));
+  EXPECT_FALSE(filter.below_support(top_down(panda::kFingertipZ + 0.01)));
+  const CloudGraspFilter refiner(box, kRefine, panda::kMaxOpening, table);
+  const lie::Pose lifted = refiner.refined(top_down(panda::kFingertipZ - 0.005));
+  EXPECT_FALSE(refiner.below_support(lifted));
+  EXPECT_GT(lifted.p.z(), panda::kFingertipZ - 0.005);
+  // Without a table the same grasp is kept by a collision check: no point is in the hand.
+  EXPECT_TRUE(CloudGraspFilter(box, kCollisions).keeps(top_down(panda::kFingertipZ - 0.005)));
 }
 
 }  // namespace

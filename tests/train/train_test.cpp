@@ -89,6 +89,17 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", 0.5}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", -0.1}}}}), Error);
   EXPECT_DOUBLE_EQ(train_config_from_json({{"data", {{"stretch", 0.1}}}}).data.stretch, 0.1);
+  const TrainConfig partial = train_config_from_json(
+      {{"data", {{"input", "mixed"}, {"views", {{"elevation", {20, 60}}, {"noise", false}}}}}});
+  EXPECT_EQ(partial.data.input, data::CloudInput::mixed);
+  EXPECT_DOUBLE_EQ(partial.data.views.min_elevation, 20.0);
+  EXPECT_DOUBLE_EQ(partial.data.views.max_distance, 0.7);
+  EXPECT_FALSE(partial.data.views.noisy);
+  EXPECT_EQ(train_config_from_json(to_json(partial)).data.views.max_elevation, 60.0);
+  EXPECT_THROW(train_config_from_json({{"data", {{"input", "half"}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"data", {{"views", {{"distance", {0.9, 0.5}}}}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"data", {{"views", {{"distance", 0.5}}}}}}), Error);
+  EXPECT_THROW(train_config_from_json({{"data", {{"views", {{"fov", 60}}}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"model", {{"encoder", {{"points", 8}, {"k", 16}}}}}}),
                Error);
 }
@@ -506,6 +517,34 @@ TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
   EXPECT_EQ(box.info.file, "meshes/Box/b0.obj");
 }
 
+TEST(Evaluation, SingleViewsAboveTheTable) {
+  torch::manual_seed(1);
+  const ScratchDir dir;
+  const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
+  const data::GraspObject box = data::AcronymDataset::load({dataset.objects()[0]})[0];
+  const TrainConfig config = tiny_config();
+  const Generator model = make_generator(config);
+  const InputSetting input{camera::ViewSampling(), true};
+  EXPECT_EQ(to_string(input), "views above the table");
+  const ObjectEvaluation e =
+      evaluate_object(*model, box, config, test_rotations(), 10, config.sampling, 3, {}, input);
+  ASSERT_EQ(e.views.size(), 3u);
+  EXPECT_NE(e.views[0].azimuth, e.views[1].azimuth);  // one camera per rotation
+  // No hand reaches below the table the box stands on, in the box's frame.
+  const geometry::TriangleMesh hand = geometry::read_mesh(graspecmf::testing::gripper_mesh_file());
+  const double table_z = geometry::bounding_box(box.mesh).min.z();
+  for (const std::vector<lie::Pose>& grasps : e.generated) {
+    ASSERT_EQ(grasps.size(), 10u);
+    for (const lie::Pose& g : grasps) {
+      for (const Eigen::Vector3d& v : hand.vertices) EXPECT_GT((g.R * v + g.p).z(), table_z - 1e-9);
+    }
+  }
+  // The same views again for the same seed; the whole surface gives other EMDs.
+  const ObjectEvaluation again =
+      evaluate_object(*model, box, config, test_rotations(), 10, config.sampling, 3, {}, input);
+  EXPECT_EQ(again.views[2].noise_seed, e.views[2].noise_seed);
+}
+
 TEST(Baselines, NearestObjectAndRandomGrasps) {
   const ScratchDir dir;
   const fs::path root = tiny_dataset(dir);
@@ -537,6 +576,20 @@ TEST(Baselines, NearestObjectAndRandomGrasps) {
   const std::vector<data::GraspObject> only_itself = {boxes[0]};
   EXPECT_THROW(evaluate_baselines(boxes[0], TrainingShapes(only_itself, 7), 50, 7), Error);
   EXPECT_THROW(TrainingShapes({}, 7), Error);
+  // Given one view, the nearest shape is still the 5 cm box: the training boxes are seen from
+  // the same camera.
+  const camera::ViewSampling views;
+  const InputSetting input{views, false};
+  Rng rng(4);
+  const camera::ViewDraw view = camera::draw_view(views, rng);
+  const BaselineEvaluation seen =
+      evaluate_baselines(boxes[2], TrainingShapes(smaller, 7, views), 50, 7, {}, input, &view);
+  EXPECT_EQ(seen.scores.nearest, boxes[1].name);
+  EXPECT_EQ(seen.nearest_grasps.size(), 50u);
+  EXPECT_THROW(evaluate_baselines(boxes[2], TrainingShapes(smaller, 7), 50, 7, {}, input, &view),
+               Error);  // not set up for views
+  EXPECT_THROW(evaluate_baselines(boxes[2], TrainingShapes(smaller, 7, views), 50, 7, {}, input),
+               Error);  // no view given
 }
 
 }  // namespace

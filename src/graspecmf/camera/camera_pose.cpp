@@ -27,6 +27,10 @@ lie::Pose read_camera_pose(const std::filesystem::path& path) {
     throw Error(what +
                 ": expected a 4 × 4 matrix of numbers (a list of 4 rows, or {\"matrix\": rows})");
   }
+  return camera_pose_from_matrix(T, what);
+}
+
+lie::Pose camera_pose_from_matrix(const lie::Mat4& T, const std::string& what) {
   if (!T.allFinite()) throw Error(what + ": the camera pose has a non-finite entry");
   if ((T.row(3) - Eigen::RowVector4d(0, 0, 0, 1)).cwiseAbs().maxCoeff() > 1e-9) {
     throw Error(what + ": the last row of the camera pose must be 0 0 0 1");

@@ -3,6 +3,7 @@
 // (x right, y down, z forward) to a base (world, robot) frame, in JSON files and built by aiming.
 
 #include <filesystem>
+#include <string>
 
 #include "graspecmf/lie/se3.hpp"
 
@@ -12,6 +13,10 @@ namespace graspecmf::camera {
 // Throws Error "<path>: <why>" unless the rotation block is a rotation (to 1e-4) and the last row
 // is 0 0 0 1; the rotation is re-orthonormalised.
 lie::Pose read_camera_pose(const std::filesystem::path& path);
+
+// T_base_camera from a 4 × 4 matrix, checked and re-orthonormalised as read_camera_pose does;
+// errors start with `what`.
+lie::Pose camera_pose_from_matrix(const lie::Mat4& T, const std::string& what);
 
 // Writes T_base_camera as {"matrix": rows}, atomically.
 void write_camera_pose(const lie::Pose& base_from_camera, const std::filesystem::path& path);

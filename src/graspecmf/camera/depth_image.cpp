@@ -1,5 +1,6 @@
 #include "graspecmf/camera/depth_image.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -47,17 +48,29 @@ DepthImage read_depth_image(const std::filesystem::path& path, double png_metres
     }
   } else if (extension == ".npy") {
     const NpyArray array = read_image_npy(path);
-    depth.height = static_cast<int>(array.shape[0]);
-    depth.width = static_cast<int>(array.shape[1]);
     // Integer arrays are in the PNG's unit, as a depth PNG read with NumPy would be.
-    const double scale = array.integral ? png_metres_per_unit : 1.0;
-    depth.metres.reserve(array.values.size());
-    for (const double v : array.values) {
-      if (v < 0.0) throw Error(path.string() + ": a depth is negative (" + std::to_string(v) + ")");
-      depth.metres.push_back(std::isfinite(v) ? static_cast<float>(v * scale) : 0.0f);
-    }
+    depth = depth_from_values(array.values, static_cast<int>(array.shape[0]),
+                              static_cast<int>(array.shape[1]),
+                              array.integral ? png_metres_per_unit : 1.0, path.string());
   } else {
     throw Error(path.string() + ": a depth image must be a 16-bit .png or a .npy array");
+  }
+  return depth;
+}
+
+DepthImage depth_from_values(const std::vector<double>& values, int height, int width, double scale,
+                             const std::string& what) {
+  if (height <= 0 || width <= 0 ||
+      values.size() != static_cast<std::size_t>(height) * static_cast<std::size_t>(width)) {
+    throw Error(what + ": expected a depth image of shape (height, width)");
+  }
+  DepthImage depth;
+  depth.height = height;
+  depth.width = width;
+  depth.metres.reserve(values.size());
+  for (const double v : values) {
+    if (v < 0.0) throw Error(what + ": a depth is negative (" + std::to_string(v) + ")");
+    depth.metres.push_back(std::isfinite(v) ? static_cast<float>(v * scale) : 0.0f);
   }
   return depth;
 }
@@ -80,23 +93,28 @@ void write_depth_png(const DepthImage& depth, const std::filesystem::path& path,
 }
 
 std::vector<std::uint8_t> read_mask(const std::filesystem::path& path, int width, int height) {
-  std::vector<std::uint8_t> mask;
-  int mask_width = 0, mask_height = 0;
   if (lower_extension(path) == ".npy") {
     const NpyArray array = read_image_npy(path);
-    mask_height = static_cast<int>(array.shape[0]);
-    mask_width = static_cast<int>(array.shape[1]);
-    for (const double v : array.values) mask.push_back(v != 0.0 && !std::isnan(v));
-  } else {
-    const GrayImage image = read_png(path);
-    mask_width = image.width;
-    mask_height = image.height;
-    for (const std::uint16_t v : image.values) mask.push_back(v != 0);
+    return mask_from_values(array.values, static_cast<int>(array.shape[0]),
+                            static_cast<int>(array.shape[1]), width, height, path.string());
   }
-  if (mask_width != width || mask_height != height) {
-    throw Error(path.string() + ": the mask is " + size_text(mask_width, mask_height) +
+  const GrayImage image = read_png(path);
+  return mask_from_values(std::vector<double>(image.values.begin(), image.values.end()),
+                          image.height, image.width, width, height, path.string());
+}
+
+std::vector<std::uint8_t> mask_from_values(const std::vector<double>& values, int mask_height,
+                                           int mask_width, int width, int height,
+                                           const std::string& what) {
+  if (mask_width != width || mask_height != height ||
+      values.size() != static_cast<std::size_t>(std::max(width, 0)) *
+                           static_cast<std::size_t>(std::max(height, 0))) {
+    throw Error(what + ": the mask is " + size_text(mask_width, mask_height) +
                 " pixels but the depth image is " + size_text(width, height));
   }
+  std::vector<std::uint8_t> mask;
+  mask.reserve(values.size());
+  for (const double v : values) mask.push_back(v != 0.0 && !std::isnan(v));
   return mask;
 }
 

@@ -1,10 +1,13 @@
 #include "graspecmf/camera/view_input.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <string>
 
 #include "graspecmf/camera/view_cloud.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/geometry/object_size.hpp"
 
 namespace graspecmf::camera {
 namespace {
@@ -103,6 +106,26 @@ ViewPoints view_points(const DepthImage& depth, const Intrinsics& intrinsics,
   view.scene = moved(std::move(view.scene), output_from_camera);
   if (table) view.table = moved(*table, output_from_camera);
   return view;
+}
+
+void set_table(ViewOptions& options, const std::string& text, const std::string& what) {
+  if (text == "auto") {
+    options.table_mode = TableMode::automatic;
+  } else if (text == "none") {
+    options.table_mode = TableMode::none;
+  } else {
+    options.table_mode = TableMode::given;
+    options.table = geometry::parse_plane(text, what);
+  }
+}
+
+void check_view_size(const std::vector<lie::Vec3>& object, const std::string& what,
+                     const std::function<std::string(bool larger)>& advice) {
+  const double size = geometry::largest_side(object);
+  if (size >= geometry::kMinObjectSize && size <= geometry::kMaxObjectSize) return;
+  const bool larger = size > geometry::kMaxObjectSize;
+  throw Error(fmt::format("{}: the object seen is {:.3g} m across, {} than a graspable object; {}",
+                          what, size, larger ? "larger" : "smaller", advice(larger)));
 }
 
 }  // namespace graspecmf::camera

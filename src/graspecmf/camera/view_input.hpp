@@ -3,7 +3,9 @@
 // points (for the collision check) and the table, in the frame grasps are wanted in.
 
 #include <cstdint>
+#include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "graspecmf/camera/depth_image.hpp"
@@ -30,6 +32,10 @@ struct ViewOptions {
   double scene_radius = 0.3;  // m; scene points beyond this from the object are not checked
 };
 
+// Sets options.table_mode (and table) from "auto", "none" or a plane "a,b,c,d" in the output
+// frame. Throws Error naming `what` for other text.
+void set_table(ViewOptions& options, const std::string& text, const std::string& what);
+
 // The object as the camera sees it, in the output frame (the base frame of output_from_camera).
 struct ViewPoints {
   std::vector<lie::Vec3> object;         // the object's points, downsampled, outliers removed
@@ -44,5 +50,10 @@ struct ViewPoints {
 ViewPoints view_points(const DepthImage& depth, const Intrinsics& intrinsics,
                        const std::vector<std::uint8_t>& mask, const lie::Pose& output_from_camera,
                        const ViewOptions& options, std::uint64_t seed);
+
+// Throws Error "<what>: the object seen is S across, smaller (larger) than a graspable object;
+// <advice(larger)>" unless the points span 1 cm to 1 m (the usual sign of a wrong depth unit).
+void check_view_size(const std::vector<lie::Vec3>& object, const std::string& what,
+                     const std::function<std::string(bool larger)>& advice);
 
 }  // namespace graspecmf::camera

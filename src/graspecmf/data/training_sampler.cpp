@@ -30,6 +30,25 @@ std::string to_string(Augmentation augmentation) {
   return "?";
 }
 
+CloudInput parse_cloud_input(const std::string& name) {
+  if (name == "full") return CloudInput::full;
+  if (name == "partial") return CloudInput::partial;
+  if (name == "mixed") return CloudInput::mixed;
+  throw Error("unknown input '" + name + "' (expected full, partial or mixed)");
+}
+
+std::string to_string(CloudInput input) {
+  switch (input) {
+    case CloudInput::full:
+      return "full";
+    case CloudInput::partial:
+      return "partial";
+    case CloudInput::mixed:
+      return "mixed";
+  }
+  return "?";
+}
+
 ObjectSample make_object_sample(const geometry::SurfacePoints& cloud,
                                 const std::vector<lie::Pose>& grasps, const Eigen::Matrix3d& g,
                                 double position_scale) {
@@ -86,6 +105,7 @@ TrainingSampler::TrainingSampler(std::vector<GraspObject> objects,
   if (!(options.stretch >= 0 && options.stretch < 0.5)) {
     throw Error("training sampler: stretch must be in [0, 0.5)");
   }
+  if (options.input != CloudInput::full) camera::validate(options.views, "training views");
   surfaces_.reserve(objects_.size());
   for (const GraspObject& object : objects_) {
     if (object.grasps.empty()) throw Error("object " + object.name + " has no successful grasp");
@@ -94,7 +114,19 @@ TrainingSampler::TrainingSampler(std::vector<GraspObject> objects,
       distances_.emplace_back(object.mesh);
       radii_.push_back(0.5 * geometry::bounding_box(object.mesh).extent().norm());
     }
+    if (options.input != CloudInput::full) casters_.emplace_back(object.mesh);
   }
+}
+
+geometry::SurfacePoints TrainingSampler::input_cloud(std::size_t index) {
+  // The full setting draws nothing extra, so that its runs stay as they were.
+  const bool partial = options_.input == CloudInput::partial ||
+                       (options_.input == CloudInput::mixed && rng_.uniform() < 0.5);
+  if (!partial) return surfaces_[index].sample(options_.points, rng_);
+  geometry::SurfacePoints cloud;
+  cloud.points = camera::pick_points(camera::partial_cloud(casters_[index], options_.views, rng_),
+                                     options_.points, 1, rng_);
+  return cloud;
 }
 
 std::vector<ObjectSample> TrainingSampler::next_step() {
@@ -126,7 +158,7 @@ std::vector<ObjectSample> TrainingSampler::next_step() {
       g = Eigen::AngleAxisd(2.0 * M_PI * rng_.uniform(), Eigen::Vector3d::UnitZ())
               .toRotationMatrix();
     }
-    geometry::SurfacePoints cloud = surfaces_[index].sample(options_.points, rng_);
+    geometry::SurfacePoints cloud = input_cloud(index);
     DistanceSamples queries;
     if (options_.distance_points > 0) {
       queries = near_surface_distances(surfaces_[index], distances_[index],

@@ -1,6 +1,7 @@
 #pragma once
 // What one training step sees (docs/method.md, "Flow matching on SO(3) × R³"): a few objects, each
-// with a fresh surface point cloud and a subset of its successful grasps, rotated by the
+// with a fresh point cloud (of its whole surface, or of what one random camera sees of it) and a
+// subset of its successful grasps, rotated by the
 // augmentation, centred on the cloud's centroid and scaled by the network's position scale.
 // Torch-free: plain float arrays.
 
@@ -8,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "graspecmf/camera/partial_view.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/data/dataset.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
@@ -21,6 +23,13 @@ enum class Augmentation { none, z, so3 };
 // "none", "z" or "so3" → the setting; throws Error for another name.
 Augmentation parse_augmentation(const std::string& name);
 std::string to_string(Augmentation augmentation);
+
+// The input clouds: the object's whole surface, what one random camera above it sees
+// (camera::partial_cloud), or either with equal odds.
+enum class CloudInput { full, partial, mixed };
+// "full", "partial" or "mixed" → the setting; throws Error for another name.
+CloudInput parse_cloud_input(const std::string& name);
+std::string to_string(CloudInput input);
 
 // One object in network units: x_net = scale · (g x − c), with g the augmentation rotation and c
 // the centroid of the rotated cloud.
@@ -49,6 +58,10 @@ struct TrainingSamplerOptions {
   // Distance-field targets (SE(3)-DiF's auxiliary loss): query points near the surface per object
   // with their unsigned distances to it; 0 draws none.
   std::size_t distance_points = 0;
+  // Partial views come from `views`; each gives `points` of its points (drawn without
+  // replacement, or every point and then repeats when it has fewer).
+  CloudInput input = CloudInput::full;
+  camera::ViewSampling views;
 };
 
 // Stretches a sampled object by S = diag(factors) in its own frame: points q → S q (normals
@@ -89,9 +102,13 @@ class TrainingSampler {
   void restore(const std::string& text);
 
  private:
+  // The step's cloud of object `index`: its surface, or a partial view, as options_.input says.
+  geometry::SurfacePoints input_cloud(std::size_t index);
+
   std::vector<GraspObject> objects_;
   std::vector<geometry::SurfaceSampler> surfaces_;
   std::vector<geometry::UnsignedDistance> distances_;  // only when options_.distance_points > 0
+  std::vector<geometry::MeshRayCaster> casters_;       // only when the input can be partial
   std::vector<double> radii_;                          // half the bounding-box diagonals
   TrainingSamplerOptions options_;
   Rng rng_;

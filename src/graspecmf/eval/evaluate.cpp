@@ -61,7 +61,7 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
                                 const EvaluationOptions& o, const EvaluationCallbacks& callbacks) {
   if (objects.empty()) throw Error("evaluate: no objects to evaluate on");
   std::optional<TrainingShapes> shapes;
-  if (training != nullptr) shapes.emplace(*training, o.seed);
+  if (training != nullptr) shapes.emplace(*training, o.seed, o.input.views);
   EvaluationReport report;
   report.model = model_name;
   report.step = model.step;
@@ -71,14 +71,15 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
                      o.sampling.steps,
                      o.sampling.guidance,
                      o.sampling.clouds,
-                     o.checks};
+                     o.checks,
+                     to_string(o.input)};
   report.seed = o.seed;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = o.num == 0 ? object.grasps.size() : o.num;
     const ObjectFilter filter = object_filter(object, o.checks, o.seed);
     const ObjectEvaluation e = evaluate_object(*model.model, object, model.config, test_rotations(),
-                                               n, o.sampling, o.seed, filter);
+                                               n, o.sampling, o.seed, filter, o.input);
     ObjectResult& result = report.objects.emplace_back();
     result.name = e.name;
     result.n = e.n;
@@ -87,7 +88,8 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
     result.sampling_seconds = e.sampling_seconds;
     std::optional<BaselineEvaluation> baseline;
     if (shapes) {
-      baseline.emplace(evaluate_baselines(object, *shapes, n, o.seed, filter));
+      baseline.emplace(evaluate_baselines(object, *shapes, n, o.seed, filter, o.input,
+                                          e.views.empty() ? nullptr : &e.views.front()));
       result.baselines = baseline->scores;
     }
     if (o.success > 0) simulate(object, e, baseline ? &*baseline : nullptr, o, callbacks, result);

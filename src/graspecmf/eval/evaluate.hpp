@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "graspecmf/data/dataset.hpp"
+#include "graspecmf/eval/evaluation.hpp"
 #include "graspecmf/eval/report.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/models/model_folder.hpp"
@@ -22,6 +23,7 @@ struct EvaluationOptions {
   std::size_t num = 0;      // grasps per object and rotation; 0: as many as it has successful
   std::size_t success = 0;  // the first K grasps of each rotation simulated; 0: no simulation
   gripper::GraspChecks checks;
+  InputSetting input;  // whole surfaces or single views, with or without the table
   models::SamplingSettings sampling;
   std::uint64_t seed = 0;  // clouds, reference grasps, the prior and the bootstrap
   int threads = 1;         // simulator threads

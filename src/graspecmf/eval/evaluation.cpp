@@ -27,6 +27,11 @@ std::vector<Eigen::Vector3d> rotated(const std::vector<Eigen::Vector3d>& points,
   return result;
 }
 
+// The table the object stands on, in its frame: the plane z = its lowest z.
+geometry::Plane table_under(const geometry::TriangleMesh& mesh) {
+  return {Eigen::Vector3d::UnitZ(), -geometry::bounding_box(mesh).min.z()};
+}
+
 }  // namespace
 
 std::vector<Eigen::Matrix3d> test_rotations() {
@@ -53,27 +58,45 @@ ObjectFilter object_filter(const data::GraspObject& object, const gripper::Grasp
           checks.any() ? gripper::filter_cloud(object.mesh, seed) : std::vector<Eigen::Vector3d>{}};
 }
 
+std::string to_string(const InputSetting& input) {
+  return std::string(input.views ? "views" : "full") + (input.table ? " above the table" : "");
+}
+
 ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
                                  const data::GraspObject& object, const models::TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,
                                  const models::SamplingSettings& settings, std::uint64_t seed,
-                                 const ObjectFilter& filter) {
+                                 const ObjectFilter& filter, const InputSetting& input) {
   ObjectEvaluation result;
   result.name = object.name;
   const std::vector<lie::Pose> reference = reference_grasps(object, n, seed);
   result.n = reference.size();
+  const auto clouds = static_cast<std::size_t>(settings.clouds);
+  const auto points = static_cast<std::size_t>(config.model.encoder.points);
   const geometry::SurfacePoints cloud =
-      geometry::sample_surface(object.mesh,
-                               static_cast<std::size_t>(settings.clouds) *
-                                   static_cast<std::size_t>(config.model.encoder.points),
-                               seed + 1);
+      geometry::sample_surface(object.mesh, clouds * points, seed + 1);
+  std::optional<geometry::MeshRayCaster> caster;
+  if (input.views) caster.emplace(object.mesh);
+  Rng view_rng(seed + 1);
+  const geometry::Plane table = table_under(object.mesh);
   for (std::size_t r = 0; r < rotations.size(); ++r) {
     const Eigen::Matrix3d& g = rotations[r];
-    const std::vector<Eigen::Vector3d> rotated_cloud = rotated(cloud.points, g);
+    if (input.views) result.views.push_back(camera::draw_view(*input.views, view_rng));
+    const std::vector<Eigen::Vector3d> seen =
+        input.views
+            ? camera::pick_points(camera::partial_cloud(*caster, *input.views, result.views.back()),
+                                  points, clouds, view_rng)
+            : cloud.points;
+    const std::vector<Eigen::Vector3d> rotated_cloud = rotated(seen, g);
     std::vector<lie::Pose> rotated_reference;
     for (const lie::Pose& x : reference) rotated_reference.push_back({g * x.R, g * x.p});
+    std::optional<geometry::Plane> support;
+    if (input.table) support = geometry::Plane{g * table.normal, table.offset};
     std::optional<gripper::CloudGraspFilter> rotated_filter;
-    if (filter.checks.any()) rotated_filter.emplace(rotated(filter.points, g), filter.checks);
+    if (filter.checks.any() || support) {
+      rotated_filter.emplace(rotated(filter.checks.any() ? filter.points : seen, g), filter.checks,
+                             gripper::panda::kMaxOpening, support);
+    }
     const auto start = std::chrono::steady_clock::now();
     const std::vector<lie::Pose> generated =
         models::sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
@@ -93,49 +116,90 @@ namespace {
 
 constexpr std::size_t kShapePoints = 512;
 
-// A seeded surface cloud of the object, centred on its centroid; the centroid is returned too.
-std::vector<Eigen::Vector3d> centred_cloud(const data::GraspObject& object, std::uint64_t seed,
-                                           Eigen::Vector3d& centroid) {
-  std::vector<Eigen::Vector3d> cloud =
-      geometry::sample_surface(object.mesh, kShapePoints, seed).points;
+// The cloud centred on its centroid; the centroid is returned too.
+std::vector<Eigen::Vector3d> centred(std::vector<Eigen::Vector3d> cloud,
+                                     Eigen::Vector3d& centroid) {
   centroid = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& q : cloud) centroid += q / static_cast<double>(cloud.size());
   for (Eigen::Vector3d& q : cloud) q -= centroid;
   return cloud;
 }
 
+// A seeded surface cloud of the object, centred on its centroid.
+std::vector<Eigen::Vector3d> centred_cloud(const data::GraspObject& object, std::uint64_t seed,
+                                           Eigen::Vector3d& centroid) {
+  return centred(geometry::sample_surface(object.mesh, kShapePoints, seed).points, centroid);
+}
+
+// kShapePoints of what the drawn camera sees of the mesh, centred on their centroid.
+std::vector<Eigen::Vector3d> centred_view(const geometry::MeshRayCaster& mesh,
+                                          const camera::ViewSampling& views,
+                                          const camera::ViewDraw& view, std::uint64_t seed,
+                                          Eigen::Vector3d& centroid) {
+  Rng rng(seed);
+  return centred(
+      camera::pick_points(camera::partial_cloud(mesh, views, view), kShapePoints, 1, rng),
+      centroid);
+}
+
 }  // namespace
 
-TrainingShapes::TrainingShapes(const std::vector<data::GraspObject>& objects, std::uint64_t seed)
-    : objects_(objects), seed_(seed), centroids_(objects.size()) {
+TrainingShapes::TrainingShapes(const std::vector<data::GraspObject>& objects, std::uint64_t seed,
+                               const std::optional<camera::ViewSampling>& views)
+    : objects_(objects), seed_(seed), views_(views), centroids_(objects.size()) {
   if (objects.empty()) throw Error("the nearest-object baseline needs training objects");
   for (std::size_t i = 0; i < objects.size(); ++i) {
     clouds_.push_back(centred_cloud(objects[i], seed, centroids_[i]));
+    if (views) casters_.emplace_back(objects[i].mesh);
   }
 }
 
-const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object,
-                                                 Eigen::Vector3d& centroid,
-                                                 Eigen::Vector3d& nearest_centroid) const {
-  const std::vector<Eigen::Vector3d> cloud = centred_cloud(object, seed_, centroid);
+std::size_t TrainingShapes::closest(
+    const std::vector<Eigen::Vector3d>& cloud, const std::string& name,
+    const std::function<std::vector<Eigen::Vector3d>(std::size_t)>& other) const {
   double best = std::numeric_limits<double>::infinity();
   std::optional<std::size_t> best_index;
-  for (std::size_t i = 0; i < clouds_.size(); ++i) {
-    if (objects_[i].name == object.name) continue;
-    const double d = metrics::chamfer_distance(cloud, clouds_[i]);
+  for (std::size_t i = 0; i < objects_.size(); ++i) {
+    if (objects_[i].name == name) continue;
+    const double d = metrics::chamfer_distance(cloud, other(i));
     if (!best_index || d < best) {
       best = d;
       best_index = i;
     }
   }
-  if (!best_index) throw Error(object.name + ": no other training object to compare with");
-  nearest_centroid = centroids_[*best_index];
-  return objects_[*best_index];
+  if (!best_index) throw Error(name + ": no other training object to compare with");
+  return *best_index;
+}
+
+const data::GraspObject& TrainingShapes::nearest(const data::GraspObject& object,
+                                                 Eigen::Vector3d& centroid,
+                                                 Eigen::Vector3d& nearest_centroid) const {
+  const std::size_t i = closest(centred_cloud(object, seed_, centroid), object.name,
+                                [&](std::size_t j) { return clouds_[j]; });
+  nearest_centroid = centroids_[i];
+  return objects_[i];
+}
+
+const data::GraspObject& TrainingShapes::nearest_to_view(const data::GraspObject& object,
+                                                         const camera::ViewDraw& view,
+                                                         Eigen::Vector3d& centroid,
+                                                         Eigen::Vector3d& nearest_centroid) const {
+  if (!views_) throw Error("the nearest-object baseline was not set up for views");
+  const geometry::MeshRayCaster mesh(object.mesh);
+  std::vector<Eigen::Vector3d> view_centroids(objects_.size());
+  const std::size_t i =
+      closest(centred_view(mesh, *views_, view, seed_, centroid), object.name, [&](std::size_t j) {
+        return centred_view(casters_[j], *views_, view, seed_, view_centroids[j]);
+      });
+  nearest_centroid = view_centroids[i];
+  return objects_[i];
 }
 
 BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                       const TrainingShapes& training, std::size_t n,
-                                      std::uint64_t seed, const ObjectFilter& filter) {
+                                      std::uint64_t seed, const ObjectFilter& filter,
+                                      const InputSetting& input, const camera::ViewDraw* view) {
+  if (input.views && view == nullptr) throw Error("the view baseline needs the object's view");
   BaselineEvaluation result;
   const std::vector<lie::Pose> shuffled = shuffled_grasps(object, seed);
   const auto slice = [&](std::size_t offset, std::size_t count) {
@@ -152,11 +216,21 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
                                     gripper::panda::kPadCenterZ, result.n, seed + 1),
       reference);
   Eigen::Vector3d centroid, neighbour_centroid;
-  const data::GraspObject& nearest = training.nearest(object, centroid, neighbour_centroid);
+  const data::GraspObject& nearest =
+      input.views ? training.nearest_to_view(object, *view, centroid, neighbour_centroid)
+                  : training.nearest(object, centroid, neighbour_centroid);
   result.scores.nearest = nearest.name;
   std::vector<lie::Pose> moved;
   std::optional<gripper::CloudGraspFilter> grasp_filter;
-  if (filter.checks.any()) grasp_filter.emplace(filter.points, filter.checks);
+  if (filter.checks.any() || input.table) {
+    std::optional<geometry::Plane> support;
+    if (input.table) support = table_under(object.mesh);
+    // Without checks the filter's points go unused: a small surface sample stands in.
+    grasp_filter.emplace(filter.checks.any()
+                             ? filter.points
+                             : geometry::sample_surface(object.mesh, kShapePoints, seed).points,
+                         filter.checks, gripper::panda::kMaxOpening, support);
+  }
   for (lie::Pose g : shuffled_grasps(nearest, seed)) {
     if (moved.size() == result.n) break;
     g.p += centroid - neighbour_centroid;

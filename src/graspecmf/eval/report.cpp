@@ -178,7 +178,8 @@ json to_json(const EvaluationReport& r) {
               {"clouds", s.clouds},
               {"refine", s.checks.refine},
               {"reject_collisions", s.checks.collisions},
-              {"reject_shallow", s.checks.shallow}}},
+              {"reject_shallow", s.checks.shallow},
+              {"input", s.input}}},
             {"seed", r.seed},
             {"objects", objects},
             {"mean_emd", d.emd.mean},
@@ -282,8 +283,9 @@ std::string summary(const EvaluationReport& r) {
 
 std::string to_markdown(const EvaluationReport& r) {
   const ReportSettings& s = r.settings;
-  return fmt::format("# EMD of {} (step {}; {}{})\n\n{}\n{}\n", r.model, r.step, s.sampler,
-                     filter_note(s.checks), markdown_table(r), summary(r));
+  const std::string input = s.input == "full" ? "" : "; input: " + s.input;
+  return fmt::format("# EMD of {} (step {}; {}{}{})\n\n{}\n{}\n", r.model, r.step, s.sampler,
+                     filter_note(s.checks), input, markdown_table(r), summary(r));
 }
 
 }  // namespace graspecmf::eval

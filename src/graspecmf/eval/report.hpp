@@ -45,6 +45,7 @@ struct ReportSettings {
   double guidance = 0.0;
   int clouds = 1;
   gripper::GraspChecks checks;
+  std::string input = "full";  // "full" or "views", maybe " above the table" (to_string)
 };
 
 struct EvaluationReport {

@@ -35,19 +35,25 @@ std::vector<Vec3> filter_cloud(const geometry::TriangleMesh& mesh, std::uint64_t
   return geometry::sample_surface(mesh, kFilterCloudPoints, seed + kSeedOffset).points;
 }
 
-CloudGraspFilter::CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks, double opening)
-    : points_(std::move(points)), checks_(checks) {
+CloudGraspFilter::CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks, double opening,
+                                   std::optional<geometry::Plane> support)
+    : points_(std::move(points)), checks_(checks), support_(support) {
   if (points_.empty()) throw Error("the grasp filter needs a non-empty point cloud");
   if (!std::all_of(points_.begin(), points_.end(), [](const Vec3& q) { return q.allFinite(); })) {
     throw Error("the grasp filter's point cloud has a non-finite coordinate");
   }
-  if (!checks_.any()) throw Error("the grasp filter needs at least one check");
+  if (!checks_.any() && !support_) throw Error("the grasp filter needs at least one check");
   hand_.lower = Vec3::Constant(std::numeric_limits<double>::infinity());
   hand_.upper = -hand_.lower;
   for (const geometry::OrientedBox& box : collision_boxes(opening)) {
     // collision_boxes are axis-aligned in the gripper frame; a box bound is the box then.
     const Vec3 reach = box.pose.R.cwiseAbs() * box.half_extents;
     boxes_.push_back({box.pose.p - reach, box.pose.p + reach});
+    for (int corner = 0; corner < 8; ++corner) {
+      const Vec3 sign((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0,
+                      (corner & 4) ? 1.0 : -1.0);
+      corners_.push_back(box.pose.p + box.pose.R * sign.cwiseProduct(box.half_extents));
+    }
     hand_.lower = hand_.lower.cwiseMin(boxes_.back().lower);
     hand_.upper = hand_.upper.cwiseMax(boxes_.back().upper);
   }
@@ -61,7 +67,14 @@ inline bool CloudGraspFilter::in_hand(const Vec3& x) const {
                      [&](const Bound& box) { return inside(x, box.lower, box.upper); });
 }
 
+bool CloudGraspFilter::below_support(const lie::Pose& grasp) const {
+  return support_ && std::any_of(corners_.begin(), corners_.end(), [&](const Vec3& corner) {
+           return support_->signed_distance(grasp.R * corner + grasp.p) < 0.0;
+         });
+}
+
 bool CloudGraspFilter::in_collision(const lie::Pose& grasp) const {
+  if (below_support(grasp)) return true;
   const ToGripper local(grasp);
   return std::any_of(points_.begin(), points_.end(),
                      [&](const Vec3& q) { return in_hand(local(q)); });
@@ -69,6 +82,7 @@ bool CloudGraspFilter::in_collision(const lie::Pose& grasp) const {
 
 std::optional<double> CloudGraspFilter::scan_depth(const lie::Pose& grasp,
                                                    bool stop_at_collision) const {
+  if (stop_at_collision && below_support(grasp)) return std::nullopt;
   const ToGripper local(grasp);
   double lowest = panda::kFingertipZ;
   for (const Vec3& q : points_) {
@@ -84,6 +98,7 @@ double CloudGraspFilter::depth(const lie::Pose& grasp) const {
 }
 
 bool CloudGraspFilter::keeps(const lie::Pose& grasp) const {
+  if (below_support(grasp)) return false;
   if (!checks_.rejects()) return true;
   if (!checks_.shallow) return !in_collision(grasp);
   const std::optional<double> reach = scan_depth(grasp, checks_.collisions);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <vector>
 
+#include "graspecmf/geometry/plane_fit.hpp"
 #include "graspecmf/gripper/panda.hpp"
 
 namespace graspecmf::gripper {
@@ -43,20 +44,28 @@ struct GraspChecks {
 
 class CloudGraspFilter {
  public:
-  // Copies the points (metres, object frame). Throws Error if there are none or one is not finite,
-  // if no check is asked for, or if the opening is out of range.
+  // Copies the points (metres, object frame). With a support plane (a table; the object on the
+  // side its normal points to), a grasp whose hand reaches below it is rejected whatever the
+  // checks, and counts as colliding. Throws Error if there are no points or one is not finite, if
+  // there is no check and no support, or if the opening is out of range.
   CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks,
-                   double opening = panda::kMaxOpening);
+                   double opening = panda::kMaxOpening,
+                   std::optional<geometry::Plane> support = std::nullopt);
 
-  // True if a point lies in (or on) a collision box of the hand at `grasp` (T_object_gripper).
+  // True if a point lies in (or on) a collision box of the hand at `grasp` (T_object_gripper), or
+  // a corner of a box lies below the support plane.
   bool in_collision(const lie::Pose& grasp) const;
+  // True if a corner of a collision box of the hand at `grasp` lies below the support plane
+  // (false without one).
+  bool below_support(const lie::Pose& grasp) const;
   // How far the object reaches into the hand at `grasp`: panda::kFingertipZ minus the lowest
   // approach-axis coordinate of a point between the open fingers (within the fingers' width, from
   // the finger bases to the tips); 0 when no point is there.
   double depth(const lie::Pose& grasp) const;
   // True if refinement was asked for (GraspChecks::refine).
   bool refines() const { return checks_.refine; }
-  // True if the grasp passes every rejection check asked for (one pass over the cloud).
+  // True if the grasp clears the support plane and passes every rejection check asked for (one
+  // pass over the cloud).
   bool keeps(const lie::Pose& grasp) const;
   // The grasp itself when its open hand holds no point. Otherwise the grasp moved by the smallest
   // displacement of the search grid (kRefine*) that frees the hand with the object still
@@ -79,6 +88,8 @@ class CloudGraspFilter {
   std::vector<Bound> boxes_;  // collision_boxes
   Bound hand_;                // their common bound
   Bound gap_;                 // the space between the open fingers
+  std::optional<geometry::Plane> support_;
+  std::vector<Vec3> corners_;  // the collision boxes' corners, gripper frame
 };
 
 }  // namespace graspecmf::gripper

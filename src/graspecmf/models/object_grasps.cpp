@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "graspecmf/camera/partial_view.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/core/random.hpp"
 #include "graspecmf/geometry/surface_sampling.hpp"
@@ -36,6 +37,17 @@ ObjectPoints object_points(std::vector<Eigen::Vector3d> cloud, std::size_t count
   return object;
 }
 
+ObjectPoints object_points(camera::ViewPoints view, std::size_t points_per_cloud,
+                           std::size_t clouds, const gripper::GraspChecks& checks,
+                           std::uint64_t seed) {
+  ObjectPoints object;
+  Rng rng(seed);
+  object.cloud = camera::pick_points(view.object, points_per_cloud, clouds, rng);
+  if (checks.any()) object.filter_points = std::move(view.scene);
+  object.support = view.table;
+  return object;
+}
+
 std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const ObjectPoints& object,
                                             std::size_t n, const SamplingSettings& settings,
                                             const gripper::GraspChecks& checks,
@@ -48,7 +60,10 @@ std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const Obj
                 (clouds > 1 ? " (" + std::to_string(k) + " per cloud)" : std::string()));
   }
   std::optional<gripper::CloudGraspFilter> filter;
-  if (checks.any()) filter.emplace(object.filter_points, checks);
+  if (checks.any() || object.support) {
+    filter.emplace(object.filter_points.empty() ? object.cloud : object.filter_points, checks,
+                   gripper::panda::kMaxOpening, object.support);
+  }
   return sample_grasps(*model.model, object.cloud, model.config, n, settings, seed,
                        filter ? &*filter : nullptr);
 }

@@ -3,8 +3,10 @@
 // cloud from a mesh or a point cloud in metres, the points the grasp filters check, and the draw.
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "graspecmf/camera/view_input.hpp"
 #include "graspecmf/geometry/triangle_mesh.hpp"
 #include "graspecmf/gripper/cloud_grasp_filter.hpp"
 #include "graspecmf/lie/se3.hpp"
@@ -16,6 +18,7 @@ namespace graspecmf::models {
 struct ObjectPoints {
   std::vector<Eigen::Vector3d> cloud;  // the model's input: settings.clouds × encoder points
   std::vector<Eigen::Vector3d> filter_points;  // what the grasp checks test (empty without checks)
+  std::optional<geometry::Plane> support;  // a table under the object: no grasp reaches below it
 };
 
 // The number of input points the model takes with these settings (clouds × encoder points).
@@ -30,9 +33,16 @@ ObjectPoints object_points(const geometry::TriangleMesh& mesh, std::size_t count
 ObjectPoints object_points(std::vector<Eigen::Vector3d> cloud, std::size_t count,
                            const gripper::GraspChecks& checks, std::uint64_t seed);
 
+// From one camera's view (camera::view_points): `clouds` draws of `points_per_cloud` of the
+// object's points (camera::pick_points, as training on views draws them), when any check is on
+// the scene's points, and the table as the support.
+ObjectPoints object_points(camera::ViewPoints view, std::size_t points_per_cloud,
+                           std::size_t clouds, const gripper::GraspChecks& checks,
+                           std::uint64_t seed);
+
 // n grasps T_object_gripper for the object (models::sample_grasps, with a CloudGraspFilter over
-// its filter points when any check is on). Throws Error if the cloud has fewer points than the
-// model's neighbourhoods need.
+// its filter points and support plane when any check is on or the object has a support). Throws
+// Error if the cloud has fewer points than the model's neighbourhoods need.
 std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const ObjectPoints& object,
                                             std::size_t n, const SamplingSettings& settings,
                                             const gripper::GraspChecks& checks, std::uint64_t seed);

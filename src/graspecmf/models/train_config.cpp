@@ -63,6 +63,18 @@ void only(const json& j, std::initializer_list<const char*> known, const std::st
   }
 }
 
+// Reads json[key], a list of two numbers [lo, hi], when present.
+void read_range(const json& j, const char* key, double& lo, double& hi,
+                const std::string& section) {
+  if (!j.contains(key)) return;
+  const json& v = j.at(key);
+  if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number()) {
+    throw Error("train config: " + section + key + " must be a list of two numbers [min, max]");
+  }
+  lo = v[0].get<double>();
+  hi = v[1].get<double>();
+}
+
 constexpr std::size_t kMaxLayers = 64;
 constexpr int64_t kMaxWidth = 4096;
 constexpr double kMaxTensorBytes = 16.0 * (1 << 30);
@@ -140,6 +152,7 @@ void validate(const TrainConfig& c) {
   if (!(c.data.stretch >= 0 && c.data.stretch < 0.5)) {
     throw Error("train config: data.stretch must be in [0, 0.5)");
   }
+  camera::validate(c.data.views, "train config: data.views");
   if (c.steps < 1 || c.steps > 1000000000) throw Error("train config: steps must be in [1, 10^9]");
   if (!(c.learning_rate > 0) || !(c.weight_decay >= 0)) {
     throw Error("train config: learning_rate must be > 0 and weight_decay ≥ 0");
@@ -199,7 +212,12 @@ json to_json(const TrainConfig& c) {
             {"grasps_per_object", c.data.grasps_per_object},
             {"position_scale", c.data.position_scale},
             {"augmentation", data::to_string(c.data.augmentation)},
-            {"stretch", c.data.stretch}}},
+            {"stretch", c.data.stretch},
+            {"input", data::to_string(c.data.input)},
+            {"views",
+             {{"elevation", {c.data.views.min_elevation, c.data.views.max_elevation}},
+              {"distance", {c.data.views.min_distance, c.data.views.max_distance}},
+              {"noise", c.data.views.noisy}}}}},
           {"steps", c.steps},
           {"learning_rate", c.learning_rate},
           {"learning_rate_schedule", c.learning_rate_schedule},
@@ -265,7 +283,9 @@ TrainConfig train_config_from_json(const json& j) {
   }
   if (j.contains("data")) {
     const json& d = j["data"];
-    only(d, {"objects_per_step", "grasps_per_object", "position_scale", "augmentation", "stretch"},
+    only(d,
+         {"objects_per_step", "grasps_per_object", "position_scale", "augmentation", "stretch",
+          "input", "views"},
          "data.");
     read(d, "objects_per_step", c.data.objects_per_step, "data.");
     read(d, "grasps_per_object", c.data.grasps_per_object, "data.");
@@ -274,6 +294,17 @@ TrainConfig train_config_from_json(const json& j) {
     read(d, "augmentation", augmentation, "data.");
     c.data.augmentation = data::parse_augmentation(augmentation);
     read(d, "stretch", c.data.stretch, "data.");
+    std::string input = data::to_string(c.data.input);
+    read(d, "input", input, "data.");
+    c.data.input = data::parse_cloud_input(input);
+    if (d.contains("views")) {
+      const json& v = d["views"];
+      camera::ViewSampling& views = c.data.views;
+      only(v, {"elevation", "distance", "noise"}, "data.views.");
+      read_range(v, "elevation", views.min_elevation, views.max_elevation, "data.views.");
+      read_range(v, "distance", views.min_distance, views.max_distance, "data.views.");
+      read(v, "noise", views.noisy, "data.views.");
+    }
   }
   read(j, "steps", c.steps, "");
   read(j, "learning_rate", c.learning_rate, "");
