@@ -496,11 +496,16 @@ TEST(Checkpoint, DamageIsFoundByTheZipCrcsAndTheContentHash) {
   expect_error([&] { load_weights(dir / "unhashed.pt", *model); }, "carries no content hash");
 }
 
-TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
-  torch::manual_seed(1);
+// The tiny dataset's first box, loaded into memory.
+data::GraspObject tiny_box() {
   const ScratchDir dir;
   const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
-  const data::GraspObject box = data::AcronymDataset::load({dataset.objects()[0]})[0];
+  return data::AcronymDataset::load({dataset.objects()[0]})[0];
+}
+
+TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
+  torch::manual_seed(1);
+  const data::GraspObject box = tiny_box();
   const TrainConfig config = tiny_config();
   const Generator model = make_generator(config);
   const ObjectEvaluation e =
@@ -519,9 +524,7 @@ TEST(Evaluation, KeepsTheGeneratedGraspsInTheObjectsFrame) {
 
 TEST(Evaluation, SingleViewsAboveTheTable) {
   torch::manual_seed(1);
-  const ScratchDir dir;
-  const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
-  const data::GraspObject box = data::AcronymDataset::load({dataset.objects()[0]})[0];
+  const data::GraspObject box = tiny_box();
   const TrainConfig config = tiny_config();
   const Generator model = make_generator(config);
   const InputSetting input{camera::ViewSampling(), true};
