@@ -1,0 +1,89 @@
+"""scripts/table1-summary on synthetic cell reports: its tables and its check of the paper's claim."""
+import importlib.machinery
+import importlib.util
+import json
+import os
+import subprocess
+import sys
+
+SCRIPT = os.path.join(os.environ.get("GRASPECMF_SCRIPTS_DIR",
+                                     os.path.join(os.path.dirname(__file__), "../../scripts")),
+                      "table1-summary")
+
+
+def load_script():
+    loader = importlib.machinery.SourceFileLoader("table1_summary", SCRIPT)
+    spec = importlib.util.spec_from_loader(loader.name, loader)
+    module = importlib.util.module_from_spec(spec)
+    loader.exec_module(module)
+    return module
+
+
+def report(emds, rates):
+    """An evaluate report with one object per (EMD, success rate) pair, 10 trials each."""
+    objects = [{"object": f"mug{i}", "mean_emd": e, "n": 50,
+                "success": {"rate": r, "successes": round(10 * r), "trials": 10,
+                            "collision_rate": 0.0}}
+               for i, (e, r) in enumerate(zip(emds, rates))]
+    mean = lambda values: sum(values) / len(values)
+    return {"objects": objects, "mean_emd": mean(emds), "mean_emd_ci_95": [min(emds), max(emds)],
+            "success_rate_by_object": {"mean": mean(rates), "ci_95": [min(rates), max(rates)]},
+            "success": {"trials": 10 * len(rates), "collision_rate": 0.0}, "step": 10,
+            "parameters": 1000, "sampling_seconds_per_100_grasps": 0.5}
+
+
+def write_cell(root, cell, raw, filtered_error=False):
+    os.makedirs(os.path.join(root, cell))
+    with open(os.path.join(root, cell, "eval.json"), "w", encoding="utf-8") as f:
+        json.dump(raw, f)
+    if filtered_error:
+        with open(os.path.join(root, cell, "eval-filtered.log"), "w", encoding="utf-8") as f:
+            f.write("error: only 3 of 50 grasps passed the filters\n")
+
+
+def summary(root, *cells):
+    return subprocess.run([sys.executable, SCRIPT, str(root), *cells], check=True,
+                          capture_output=True, text=True).stdout
+
+
+def test_paired_differences_of_a_constant_shift_have_a_point_interval():
+    mean, (low, high), wins = load_script().paired([0.5, 0.6, 0.7], [0.8, 0.9, 1.0])
+    assert abs(mean - 0.3) < 1e-12 and abs(low - 0.3) < 1e-12 and abs(high - 0.3) < 1e-12
+    assert wins == 3
+
+
+def test_paired_interval_holds_the_mean_and_counts_only_strict_wins():
+    mean, (low, high), wins = load_script().paired([1, 1, 1, 1], [0, 1, 2, 5])
+    assert mean == 1.0 and low <= mean <= high and low < high
+    assert wins == 2
+
+
+def test_claim_reports_the_spread_and_each_baselines_paired_margin(tmp_path):
+    for augmentation, emd in (("none", 0.50), ("z", 0.51), ("so3", 0.52)):
+        write_cell(tmp_path, f"graspecmf-{augmentation}", report([emd] * 4, [0.8] * 4))
+    # SE(3)-DiF under none: worse on every mug, EMD ratio 2.6 ≥ the paper's 2.71? no; success +70.
+    write_cell(tmp_path, "se3dif-none", report([1.3] * 4, [0.1] * 4), filtered_error=True)
+    # The non-equivariant flow under z: better than GraspECMF on one mug of four.
+    write_cell(tmp_path, "flow_dgcnn-z", report([0.4, 1.0, 1.0, 1.0], [0.9, 0.2, 0.2, 0.2]))
+    out = summary(tmp_path, "graspecmf", "se3dif-none", "flow_dgcnn-z")
+    assert "0.5000 / 0.5100 / 0.5200, a spread (max − min) / min of 4.0 %" in out
+    assert "(the paper's 5.1 %). Under 5 %: yes." in out
+    assert "| se3dif | none | +0.8000 [+0.8000, +0.8000] | 2.60 (2.71) | 4/4 | +70.0 " \
+        "[+70.0, +70.0] (68.4) | 4/4 | no, yes |" in out
+    assert "| flow_dgcnn | z | +0.3400 " in out and "| 1.67 (—) | 3/4 | +42.5 " in out
+    assert "no paper row |" in out
+    filtered = out.split("### With --reject-collisions")[1].split("###")[0]
+    assert "| se3dif | … | … | failed | … | … | failed |" not in filtered  # only "none" is known
+    assert "| se3dif | failed | … | … | failed | … | … |" in filtered
+
+
+def test_claim_says_no_when_the_spread_reaches_five_percent(tmp_path):
+    for augmentation, emd in (("none", 0.50), ("z", 0.53), ("so3", 0.525)):
+        write_cell(tmp_path, f"graspecmf-{augmentation}", report([emd] * 3, [0.8] * 3))
+    out = summary(tmp_path, "graspecmf")
+    assert "a spread (max − min) / min of 6.0 %" in out and "Under 5 %: no." in out
+
+
+def test_no_claim_section_without_graspecmf(tmp_path):
+    write_cell(tmp_path, "se3dif-none", report([1.3] * 2, [0.1] * 2))
+    assert "### The paper's claim" not in summary(tmp_path, "se3dif-none")
