@@ -90,12 +90,14 @@ struct SamplingOverrides {
   int steps = 0;                                               // 0: the run's
   double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's
   int clouds = 0;                                              // 0: the run's
+  std::size_t max_draws = 0;                                   // 0: the run's
 
   models::SamplingSettings apply(models::SamplingSettings settings) const {
     if (!solver.empty()) settings.solver = solver;
     if (steps > 0) settings.steps = steps;
     if (!std::isnan(guidance)) settings.guidance = guidance;
     if (clouds > 0) settings.clouds = clouds;
+    if (max_draws > 0) settings.max_draws = max_draws;
     return settings;
   }
 };
@@ -110,6 +112,11 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
                   "Encode this many point clouds of the object and average their z (default: "
                   "the run's, 1 as in the paper)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--max-draws", o.max_draws,
+                  "With --reject-collisions or --reject-shallow: draw at most this many grasps "
+                  "(per test rotation for evaluate) before giving up (default: the run's, "
+                  "0: up to 8 rounds); not in the paper")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30));
 }
 
 void add_device_option(CLI::App* cmd, std::string& device) {

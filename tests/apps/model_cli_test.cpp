@@ -238,15 +238,19 @@ TEST(CliModel, TrainSampleEvaluate) {
   const std::string reject = "evaluate --model " + run_dir + " --data " + data.string() +
                              " --split val --num 4 --reject-collisions --out " +
                              (dir / "rejected.json").string();
-  const auto rejected = run(reject, dir);
+  const auto rejected = run(reject + " --max-draws 1000", dir);
   ASSERT_EQ(rejected.exit_code, 0) << rejected.err;
   expect_one_error_line(run(reject + " --baselines", dir), "passes the grasp filter on it");
   const nlohmann::json rejected_report = nlohmann::json::parse(read_file(dir / "rejected.json"));
   EXPECT_TRUE(rejected_report["sampling"]["reject_collisions"].get<bool>());
   EXPECT_FALSE(rejected_report["sampling"]["reject_shallow"].get<bool>());
+  EXPECT_EQ(rejected_report["sampling"]["max_draws"], 1000);
   EXPECT_FALSE(report["sampling"]["reject_collisions"].get<bool>());
   // As with sample, the untrained model's grasps are too rarely deep for --reject-shallow.
   expect_one_error_line(run(reject + " --reject-shallow", dir), "pass the grasp filter");
+  expect_one_error_line(run(reject + " --reject-shallow --max-draws 10", dir),
+                        "within the limit of 10 draws");
+  expect_one_error_line(run(reject + " --max-draws 3", dir), "fewer than the 4 asked for");
 }
 
 TEST(CliModel, BadInput) {

@@ -51,6 +51,7 @@ TEST(EvaluationReport, JsonHoldsTheObjectsAndTheirMeans) {
   EXPECT_EQ(j["parameters"], 1234);
   EXPECT_EQ(j["sampling"]["clouds"], 8);
   EXPECT_EQ(j["sampling"]["reject_collisions"], false);
+  EXPECT_EQ(j["sampling"]["max_draws"], 0);
   ASSERT_EQ(j["objects"].size(), 2U);
   EXPECT_EQ(j["objects"][1]["n"], 40);
   EXPECT_DOUBLE_EQ(j["mean_emd"].get<double>(), 0.4);

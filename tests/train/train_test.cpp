@@ -85,6 +85,11 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"sampling", {{"solver", "rk45"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"sampling", {{"clouds", 0}}}}), Error);
   EXPECT_EQ(train_config_from_json({{"sampling", {{"clouds", 4}}}}).sampling.clouds, 4);
+  EXPECT_THROW(train_config_from_json({{"sampling", {{"max_draws", -1}}}}), Error);
+  EXPECT_EQ(
+      train_config_from_json(to_json(train_config_from_json({{"sampling", {{"max_draws", 400}}}})))
+          .sampling.max_draws,
+      400U);
   EXPECT_THROW(train_config_from_json({{"data", {{"augmentation", "xyz"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", 0.5}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", -0.1}}}}), Error);
@@ -293,6 +298,33 @@ TEST(Sampling, RejectingCollisionsKeepsTheClearGraspsInOrder) {
   }
   const gripper::CloudGraspFilter everywhere(filled, gripper::GraspChecks{true, false});
   EXPECT_THROW(sample_grasps(*model, cloud, config, 5, config.sampling, 9, &everywhere), Error);
+}
+
+TEST(Sampling, MaxDrawsBoundsTheFilteredDrawsAndOnlyThem) {
+  torch::manual_seed(1);
+  const TrainConfig config = tiny_config();
+  const Generator model = make_generator(config);
+  const std::vector<Eigen::Vector3d> cloud = normal_cloud(0.05);
+  const gripper::CloudGraspFilter checker(cloud, gripper::GraspChecks{true, false});
+  const auto clear = sample_grasps(*model, cloud, config, 40, config.sampling, 9, &checker);
+  SamplingSettings capped = config.sampling;
+  // A generous limit leaves the draws as they were.
+  capped.max_draws = 100000;
+  const auto generous = sample_grasps(*model, cloud, config, 40, capped, 9, &checker);
+  ASSERT_EQ(generous.size(), clear.size());
+  for (std::size_t i = 0; i < clear.size(); ++i) EXPECT_EQ(generous[i].p, clear[i].p) << i;
+  // Some of the first 40 collide, so a limit of 40 draws cannot supply 40 clear grasps.
+  capped.max_draws = 40;
+  expect_error([&] { sample_grasps(*model, cloud, config, 40, capped, 9, &checker); },
+               "within the limit of 40 draws");
+  capped.max_draws = 39;
+  expect_error([&] { sample_grasps(*model, cloud, config, 40, capped, 9, &checker); },
+               "fewer than the 40 asked for");
+  // Without a filter the limit does not apply.
+  const auto all = sample_grasps(*model, cloud, config, 40, config.sampling, 9);
+  const auto unfiltered = sample_grasps(*model, cloud, config, 40, capped, 9);
+  ASSERT_EQ(unfiltered.size(), all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(unfiltered[i].p, all[i].p) << i;
 }
 
 TEST(Trainer, InterruptedRunResumesBitForBit) {

@@ -72,7 +72,8 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
                      o.sampling.guidance,
                      o.sampling.clouds,
                      o.checks,
-                     to_string(o.input)};
+                     to_string(o.input),
+                     o.sampling.max_draws};
   report.seed = o.seed;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];

@@ -179,6 +179,7 @@ json to_json(const EvaluationReport& r) {
               {"refine", s.checks.refine},
               {"reject_collisions", s.checks.collisions},
               {"reject_shallow", s.checks.shallow},
+              {"max_draws", s.max_draws},
               {"input", s.input}}},
             {"seed", r.seed},
             {"objects", objects},

@@ -46,6 +46,7 @@ struct ReportSettings {
   int clouds = 1;
   gripper::GraspChecks checks;
   std::string input = "full";  // "full" or "views", maybe " above the table" (to_string)
+  std::size_t max_draws = 0;   // with the filters, the most grasps drawn per rotation; 0: no limit
 };
 
 struct EvaluationReport {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "graspecmf/core/error.hpp"
@@ -42,6 +43,10 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
   if (cloud.empty()) throw Error("sampling needs a non-empty point cloud");
   if (n == 0) throw Error("sampling needs at least one grasp");
   if (settings.clouds < 1) throw Error("sampling needs at least one cloud");
+  if (filter != nullptr && settings.max_draws != 0 && settings.max_draws < n) {
+    throw Error("sampling may draw at most " + std::to_string(settings.max_draws) +
+                " grasps (max_draws), fewer than the " + std::to_string(n) + " asked for");
+  }
   for (const Eigen::Vector3d& q : cloud) {
     if (!q.allFinite()) throw Error("the point cloud has a non-finite coordinate");
   }
@@ -73,9 +78,13 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
   const Condition condition = model.condition(points.to(device));
   std::vector<lie::Pose> grasps;
   std::size_t drawn = 0;
-  for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n; ++round) {
+  const std::size_t budget = filter == nullptr || settings.max_draws == 0
+                                 ? std::numeric_limits<std::size_t>::max()
+                                 : settings.max_draws;
+  for (int round = 0; round < kMaxSamplingRounds && grasps.size() < n && drawn < budget; ++round) {
     const std::size_t count =
-        round == 0 ? n : next_round_size(n, n - grasps.size(), grasps.size(), drawn);
+        std::min(budget - drawn,
+                 round == 0 ? n : next_round_size(n, n - grasps.size(), grasps.size(), drawn));
     at::Generator generator = flow::make_generator(round == 0 ? seed : round_seed(seed, round));
     const flow::PoseBatch x1 =
         model.draw(condition, static_cast<int64_t>(count), settings, generator);
@@ -93,8 +102,9 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
   }
   if (grasps.size() < n) {
     throw Error("only " + std::to_string(grasps.size()) + " of " + std::to_string(drawn) +
-                " sampled grasps pass the grasp filter (" + std::to_string(n) + " needed) after " +
-                std::to_string(kMaxSamplingRounds) + " rounds");
+                " sampled grasps pass the grasp filter (" + std::to_string(n) + " needed) " +
+                (drawn >= budget ? "within the limit of " + std::to_string(budget) + " draws"
+                                 : "after " + std::to_string(kMaxSamplingRounds) + " rounds"));
   }
   return grasps;
 }

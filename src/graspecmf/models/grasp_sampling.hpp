@@ -22,9 +22,10 @@ namespace graspecmf::models {
 // seed gives the same grasps (to rounding) on every device. A `filter` that refines moves each
 // grasp (CloudGraspFilter::refined) before its checks. With a `filter`, only grasps it keeps are
 // returned: the first round draws n (the grasps of the unfiltered call), later ones the missing
-// count over the kept fraction so far, with a quarter to spare (64 to 64 n grasps), and Error is
-// thrown if fewer than n are kept after kMaxSamplingRounds. Throws Error for an empty or non-finite
-// cloud or n = 0.
+// count over the kept fraction so far, with a quarter to spare (64 to 64 n grasps), all within
+// settings.max_draws grasps when it is not 0, and Error is thrown if fewer than n are kept after
+// kMaxSamplingRounds or that many draws (or 0 < max_draws < n). Throws Error for an empty or
+// non-finite cloud or n = 0.
 inline constexpr int kMaxSamplingRounds = 8;
 std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
                                      const std::vector<Eigen::Vector3d>& cloud,

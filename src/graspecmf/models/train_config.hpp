@@ -2,6 +2,7 @@
 // Every setting of a training run (docs/config.md lists every key), read from and written to JSON;
 // the run folder keeps a copy, and a resumed run must use the same one.
 
+#include <cstddef>
 #include <cstdint>
 #include <filesystem>
 #include <nlohmann/json_fwd.hpp>
@@ -16,8 +17,9 @@ namespace graspecmf::models {
 struct SamplingSettings {
   std::string solver = "rkmk4";  // euler, heun or rkmk4
   int steps = 20;
-  double guidance = 2.0;  // classifier-free guidance weight w
-  int clouds = 1;         // clouds of the object encoded and their z averaged (1 in the paper)
+  double guidance = 2.0;      // classifier-free guidance weight w
+  int clouds = 1;             // clouds of the object encoded and their z averaged (1 in the paper)
+  std::size_t max_draws = 0;  // with a grasp filter, the most grasps drawn per call; 0: no limit
 };
 
 // The settings of 6-DOF GraspNet's generators (model.type graspnet_vae and graspnet_gan).
