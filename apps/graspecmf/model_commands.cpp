@@ -91,6 +91,7 @@ struct SamplingOverrides {
   double guidance = std::numeric_limits<double>::quiet_NaN();  // NaN: the run's
   int clouds = 0;                                              // 0: the run's
   std::size_t max_draws = 0;                                   // 0: the run's
+  bool fill_rejected = false;                                  // false: the run's
 
   models::SamplingSettings apply(models::SamplingSettings settings) const {
     if (!solver.empty()) settings.solver = solver;
@@ -98,6 +99,7 @@ struct SamplingOverrides {
     if (!std::isnan(guidance)) settings.guidance = guidance;
     if (clouds > 0) settings.clouds = clouds;
     if (max_draws > 0) settings.max_draws = max_draws;
+    if (fill_rejected) settings.fill_rejected = true;
     return settings;
   }
 };
@@ -117,6 +119,10 @@ void add_sampling_options(CLI::App* cmd, SamplingOverrides& o) {
                   "(per test rotation for evaluate) before giving up (default: the run's, "
                   "0: up to 8 rounds); not in the paper")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 30));
+  cmd->add_flag("--fill-rejected", o.fill_rejected,
+                "With the filters: when fewer grasps pass than asked for (after --max-draws or 8 "
+                "rounds), make up the shortfall with the first rejected grasps instead of "
+                "stopping (default: the run's); not in the paper");
 }
 
 void add_device_option(CLI::App* cmd, std::string& device) {
@@ -232,17 +238,20 @@ void run_sample(const SampleArgs& a) {
       sample_input(a, static_cast<std::size_t>(trained.config.model.encoder.points),
                    static_cast<std::size_t>(settings.clouds));
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<lie::Pose> grasps =
-      models::sample_object_grasps(trained, input.points, a.num, settings, a.checks, a.seed);
+  std::size_t passed = 0;
+  const std::vector<lie::Pose> grasps = models::sample_object_grasps(
+      trained, input.points, a.num, settings, a.checks, a.seed, &passed);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   formats::GraspSet record;
   for (const lie::Pose& g : grasps) record.poses.push_back(g.matrix());
   record.object = input.info;
   formats::write_grasps(record, a.out);
-  std::cout << fmt::format("{} grasps ({}{}) in {:.2f} s → {}\n", a.num,
-                           trained.model->sampler(settings), eval::filter_note(a.checks), seconds,
-                           a.out);
+  const std::string shortfall =
+      passed < a.num ? fmt::format("; only {} passed, the rest are rejected grasps", passed) : "";
+  std::cout << fmt::format("{} grasps ({}{}{}) in {:.2f} s → {}\n", a.num,
+                           trained.model->sampler(settings), eval::filter_note(a.checks), shortfall,
+                           seconds, a.out);
 }
 
 // ---- evaluate ----

@@ -134,6 +134,16 @@ TEST(CliModel, TrainSampleEvaluate) {
               " --num 7 --seed 3 --reject-collisions --reject-shallow --out " + out,
           dir),
       "pass the grasp filter");
+  const auto short_run =
+      run("sample --model " + run_dir + " --mesh " + (data / "meshes/Box/b0.obj").string() +
+              " --num 7 --seed 3 --reject-collisions --reject-shallow --max-draws 20 "
+              "--fill-rejected --out " +
+              out,
+          dir);
+  ASSERT_EQ(short_run.exit_code, 0) << short_run.err;
+  EXPECT_NE(short_run.out.find("passed, the rest are rejected grasps"), std::string::npos)
+      << short_run.out;
+  EXPECT_EQ(graspecmf::data::read_acronym_file(out).size(), 7u);
   // Points filling a 40 cm cube reach deep into nearly any hand: every grasp kept holds some of
   // them (of the whole file, not only the model's subset) at least kMinGraspDepth in.
   std::ofstream filled(dir / "filled.xyz");
@@ -250,6 +260,13 @@ TEST(CliModel, TrainSampleEvaluate) {
   expect_one_error_line(run(reject + " --reject-shallow", dir), "pass the grasp filter");
   expect_one_error_line(run(reject + " --reject-shallow --max-draws 10", dir),
                         "within the limit of 10 draws");
+  // With --fill-rejected the shortfall is made up and counted.
+  const auto filled_run = run(reject + " --reject-shallow --max-draws 10 --fill-rejected", dir);
+  ASSERT_EQ(filled_run.exit_code, 0) << filled_run.err;
+  const nlohmann::json filled_report = nlohmann::json::parse(read_file(dir / "rejected.json"));
+  EXPECT_TRUE(filled_report["sampling"]["fill_rejected"].get<bool>());
+  EXPECT_LT(filled_report["passed_fraction"].get<double>(), 1.0);
+  EXPECT_LE(filled_report["objects"][0]["passed"].get<std::size_t>(), 12U);  // of 3 × 4
   expect_one_error_line(run(reject + " --max-draws 3", dir), "fewer than the 4 asked for");
 }
 

@@ -27,8 +27,8 @@ EvaluationReport two_objects(bool baselines, bool success) {
   r.parameters = 1234;
   r.settings = {"rkmk4-20, guidance 2", "rkmk4", 20, 2.0, 8, {}};
   r.seed = 3;
-  r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, 1.5, {}, {}, {}});
-  r.objects.push_back({"b", 40, {0.5, 0.5, 0.5}, 0.5, 0.5, {}, {}, {}});
+  r.objects.push_back({"a", 50, {0.2, 0.3, 0.4}, 0.3, 1.5, {}, {}, {}, {}});
+  r.objects.push_back({"b", 40, {0.5, 0.5, 0.5}, 0.5, 0.5, {}, {}, {}, {}});
   if (baselines) {
     r.objects[0].baselines = BaselineScores{1.5, "t1", 0.6, 50, 0.25};
     r.objects[1].baselines = BaselineScores{1.7, "t2", 0.4, 30, std::nullopt};
@@ -88,6 +88,23 @@ TEST(EvaluationReport, BaselinesAndSuccessAreSummed) {
   EXPECT_EQ(j["nearest_success"]["successes"], 40);
   EXPECT_EQ(j["nearest_success_comparison"]["wins"], 1);  // a: 80 % against 40 %
   EXPECT_EQ(j["objects"][0]["nearest_success"]["trials"], 50);
+}
+
+TEST(EvaluationReport, FilteredReportsCountTheGraspsThatPassed) {
+  EvaluationReport r = two_objects(false, false);
+  EXPECT_FALSE(to_json(r).contains("passed_fraction"));
+  // a: 150 of its 3 × 50 grasps passed; b: 100 of 3 × 40, the rest filled the shortfall.
+  r.objects[0].passed = 150;
+  r.objects[1].passed = 100;
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j["objects"][1]["passed"], 100);
+  EXPECT_DOUBLE_EQ(j["passed_fraction"].get<double>(), 250.0 / 270);
+  EXPECT_NE(summary(r).find("; 92.6 % of the generated grasps passed the filter, the others are "
+                            "rejected grasps"),
+            std::string::npos)
+      << summary(r);
+  r.objects[1].passed = 120;  // all passed: nothing to say
+  EXPECT_EQ(summary(r).find("passed the filter"), std::string::npos);
 }
 
 TEST(EvaluationReport, MarkdownRowsHaveTheHeadersColumns) {

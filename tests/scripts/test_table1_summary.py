@@ -32,13 +32,12 @@ def report(emds, rates):
             "parameters": 1000, "sampling_seconds_per_100_grasps": 0.5}
 
 
-def write_cell(root, cell, raw, filtered_error=False):
+def write_cell(root, cell, raw, filtered=None):
     os.makedirs(os.path.join(root, cell))
-    with open(os.path.join(root, cell, "eval.json"), "w", encoding="utf-8") as f:
-        json.dump(raw, f)
-    if filtered_error:
-        with open(os.path.join(root, cell, "eval-filtered.log"), "w", encoding="utf-8") as f:
-            f.write("error: only 3 of 50 grasps passed the filters\n")
+    for suffix, report in (("", raw), ("-filtered", filtered)):
+        if report:
+            with open(os.path.join(root, cell, f"eval{suffix}.json"), "w", encoding="utf-8") as f:
+                json.dump(report, f)
 
 
 def summary(root, *cells):
@@ -62,7 +61,8 @@ def test_claim_reports_the_spread_and_each_baselines_paired_margin(tmp_path):
     for augmentation, emd in (("none", 0.50), ("z", 0.51), ("so3", 0.52)):
         write_cell(tmp_path, f"graspecmf-{augmentation}", report([emd] * 4, [0.8] * 4))
     # SE(3)-DiF under none: worse on every mug, EMD ratio 2.6 ≥ the paper's 2.71? no; success +70.
-    write_cell(tmp_path, "se3dif-none", report([1.3] * 4, [0.1] * 4), filtered_error=True)
+    filtered = dict(report([1.2] * 4, [0.2] * 4), passed_fraction=0.25)
+    write_cell(tmp_path, "se3dif-none", report([1.3] * 4, [0.1] * 4), filtered)
     # The non-equivariant flow under z: better than GraspECMF on one mug of four.
     write_cell(tmp_path, "flow_dgcnn-z", report([0.4, 1.0, 1.0, 1.0], [0.9, 0.2, 0.2, 0.2]))
     out = summary(tmp_path, "graspecmf", "se3dif-none", "flow_dgcnn-z")
@@ -72,9 +72,10 @@ def test_claim_reports_the_spread_and_each_baselines_paired_margin(tmp_path):
         "[+70.0, +70.0] (68.4) | 4/4 | no, yes |" in out
     assert "| flow_dgcnn | z | +0.3400 " in out and "| 1.67 (—) | 3/4 | +42.5 " in out
     assert "no paper row |" in out
-    filtered = out.split("### With --reject-collisions")[1].split("###")[0]
-    assert "| se3dif | … | … | failed | … | … | failed |" not in filtered  # only "none" is known
-    assert "| se3dif | failed | … | … | failed | … | … |" in filtered
+    with_filters = out.split("### With --reject-collisions")[1].split("###")[0]
+    assert "| se3dif | 1.2000 [1.2000, 1.2000] | … | … | 20.0 [20.0, 20.0] | … | … |" in with_filters
+    assert "| se3dif-none | 10 | … | 1000 | 0.5 | 0.0 | 0.5 | 25.0 |" in out
+    assert "| flow_dgcnn-z | 10 | … | 1000 | 0.5 | 0.0 | … | … |" in out
 
 
 def test_claim_says_no_when_the_spread_reaches_five_percent(tmp_path):

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 #include <torch/torch.h>
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -86,10 +87,10 @@ TEST(TrainConfig, UnknownKeysAndBadValuesAreErrors) {
   EXPECT_THROW(train_config_from_json({{"sampling", {{"clouds", 0}}}}), Error);
   EXPECT_EQ(train_config_from_json({{"sampling", {{"clouds", 4}}}}).sampling.clouds, 4);
   EXPECT_THROW(train_config_from_json({{"sampling", {{"max_draws", -1}}}}), Error);
-  EXPECT_EQ(
-      train_config_from_json(to_json(train_config_from_json({{"sampling", {{"max_draws", 400}}}})))
-          .sampling.max_draws,
-      400U);
+  const TrainConfig capped = train_config_from_json(to_json(
+      train_config_from_json({{"sampling", {{"max_draws", 400}, {"fill_rejected", true}}}})));
+  EXPECT_EQ(capped.sampling.max_draws, 400U);
+  EXPECT_TRUE(capped.sampling.fill_rejected);
   EXPECT_THROW(train_config_from_json({{"data", {{"augmentation", "xyz"}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", 0.5}}}}), Error);
   EXPECT_THROW(train_config_from_json({{"data", {{"stretch", -0.1}}}}), Error);
@@ -317,11 +318,31 @@ TEST(Sampling, MaxDrawsBoundsTheFilteredDrawsAndOnlyThem) {
   capped.max_draws = 40;
   expect_error([&] { sample_grasps(*model, cloud, config, 40, capped, 9, &checker); },
                "within the limit of 40 draws");
+  // With fill_rejected the clear grasps of the 40 drawn come first, then the colliding ones, in
+  // drawing order.
+  const auto all = sample_grasps(*model, cloud, config, 40, config.sampling, 9);
+  capped.fill_rejected = true;
+  std::size_t passed = 0;
+  const auto filled = sample_grasps(*model, cloud, config, 40, capped, 9, &checker, &passed);
+  ASSERT_EQ(filled.size(), 40U);
+  std::vector<lie::Pose> expected;
+  for (const bool clear_first : {true, false}) {
+    for (const lie::Pose& g : all) {
+      if (checker.in_collision(g) != clear_first) expected.push_back(g);
+    }
+  }
+  EXPECT_EQ(passed,
+            static_cast<std::size_t>(std::count_if(all.begin(), all.end(), [&](const lie::Pose& g) {
+              return !checker.in_collision(g);
+            })));
+  EXPECT_GT(passed, 0U);
+  EXPECT_LT(passed, 40U);
+  for (std::size_t i = 0; i < 40; ++i) EXPECT_LT((filled[i].p - expected[i].p).norm(), 1e-12) << i;
+  capped.fill_rejected = false;
   capped.max_draws = 39;
   expect_error([&] { sample_grasps(*model, cloud, config, 40, capped, 9, &checker); },
                "fewer than the 40 asked for");
   // Without a filter the limit does not apply.
-  const auto all = sample_grasps(*model, cloud, config, 40, config.sampling, 9);
   const auto unfiltered = sample_grasps(*model, cloud, config, 40, capped, 9);
   ASSERT_EQ(unfiltered.size(), all.size());
   for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(unfiltered[i].p, all[i].p) << i;

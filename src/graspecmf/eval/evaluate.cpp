@@ -73,7 +73,8 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
                      o.sampling.clouds,
                      o.checks,
                      to_string(o.input),
-                     o.sampling.max_draws};
+                     o.sampling.max_draws,
+                     o.sampling.fill_rejected};
   report.seed = o.seed;
   for (std::size_t i = 0; i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
@@ -87,6 +88,7 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
     result.emd = e.emd;
     result.mean_emd = e.mean_emd;
     result.sampling_seconds = e.sampling_seconds;
+    if (o.checks.any() || o.input.table) result.passed = e.passed;
     std::optional<BaselineEvaluation> baseline;
     if (shapes) {
       baseline.emplace(evaluate_baselines(object, *shapes, n, o.seed, filter, o.input,

@@ -98,9 +98,11 @@ ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
                              gripper::panda::kMaxOpening, support);
     }
     const auto start = std::chrono::steady_clock::now();
+    std::size_t passed = 0;
     const std::vector<lie::Pose> generated =
         models::sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
-                              rotated_filter ? &*rotated_filter : nullptr);
+                              rotated_filter ? &*rotated_filter : nullptr, &passed);
+    result.passed += passed;
     result.sampling_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));

@@ -23,6 +23,7 @@ struct ObjectEvaluation {
   std::vector<double> emd;  // one per rotation
   double mean_emd = 0.0;
   double sampling_seconds = 0.0;  // wall time drawing the grasps, all rotations together
+  std::size_t passed = 0;  // generated grasps the filter kept, all rotations (n each without one)
   // The n generated grasps of each rotation, rotated back into the object's frame.
   std::vector<std::vector<lie::Pose>> generated;
   std::vector<camera::ViewDraw> views;  // each rotation's camera, when the input is views
@@ -58,9 +59,9 @@ struct InputSetting {
 std::string to_string(const InputSetting& input);
 
 // For each rotation g: the object's seeded cloud (or view) and reference grasps rotated by g, n
-// grasps sampled from the model for the rotated cloud (with checks or a table, only ones that the
-// filter, rotated by g, keeps), and their EMD to the rotated reference; the generated grasps are
-// kept, in the object's frame.
+// grasps sampled from the model for the rotated cloud (with checks or a table, ones that the
+// filter, rotated by g, keeps, made up with rejected ones under settings.fill_rejected), and their
+// EMD to the rotated reference; the generated grasps are kept, in the object's frame.
 ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
                                  const data::GraspObject& object, const models::TrainConfig& config,
                                  const std::vector<Eigen::Matrix3d>& rotations, std::size_t n,

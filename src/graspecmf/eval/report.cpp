@@ -65,9 +65,10 @@ json comparison_json(const metrics::PairedComparison& c) {
 struct Derived {
   bool baselines = false, success = false;
   double mean_random = 0, mean_nearest = 0;
-  metrics::MeanInterval emd;                      // the mean over objects of their mean EMDs
-  std::optional<metrics::MeanInterval> rate;      // the mean over objects of their success rates
-  double seconds_per_100 = 0;                     // sampling wall time per 100 generated grasps
+  metrics::MeanInterval emd;                  // the mean over objects of their mean EMDs
+  std::optional<metrics::MeanInterval> rate;  // the mean over objects of their success rates
+  double seconds_per_100 = 0;                 // sampling wall time per 100 generated grasps
+  std::optional<double> passed;  // the fraction of generated grasps the filter kept, if one ran
   metrics::PairedComparison nearest;              // model EMD against nearest-object EMD
   std::optional<double> mean_floor;               // when every object has a floor
   std::optional<metrics::FloorComparison> floor;  // when some object has one
@@ -89,6 +90,11 @@ Derived derive(const EvaluationReport& r) {
   }
   d.emd = metrics::bootstrap_mean(emds, r.seed);
   d.seconds_per_100 = grasps > 0 ? 100 * seconds / grasps : 0;
+  if (all_have(r, &ObjectResult::passed) && grasps > 0) {
+    double passed = 0;
+    for (const ObjectResult& o : r.objects) passed += static_cast<double>(*o.passed);
+    d.passed = passed / grasps;
+  }
   if (d.baselines) {
     std::vector<double> nearest, floored_model, floored_nearest, floors;
     for (const ObjectResult& o : r.objects) {
@@ -152,6 +158,7 @@ json to_json(const EvaluationReport& r) {
                   {"emd", o.emd},
                   {"mean_emd", o.mean_emd},
                   {"sampling_seconds", o.sampling_seconds}};
+    if (o.passed) entry["passed"] = *o.passed;
     if (d.baselines) {
       const BaselineScores& b = *o.baselines;
       entry["random_emd"] = b.random_emd;
@@ -180,6 +187,7 @@ json to_json(const EvaluationReport& r) {
               {"reject_collisions", s.checks.collisions},
               {"reject_shallow", s.checks.shallow},
               {"max_draws", s.max_draws},
+              {"fill_rejected", s.fill_rejected},
               {"input", s.input}}},
             {"seed", r.seed},
             {"objects", objects},
@@ -199,6 +207,7 @@ json to_json(const EvaluationReport& r) {
                                {"median_model_excess", d.floor->median_excess}};
     }
   }
+  if (d.passed) j["passed_fraction"] = *d.passed;
   if (d.success) {
     j["success"] = outcomes_json(d.model_success);
     j["success_rate_by_object"] = {{"mean", d.rate->mean}, {"ci_95", {d.rate->low, d.rate->high}}};
@@ -278,6 +287,12 @@ std::string summary(const EvaluationReport& r) {
           100 * d.nearest_success.all.rate(), 100 * d.nearest_success.collision_rate(), c.wins,
           c.losses, c.sign_test_p);
     }
+  }
+  if (d.passed && *d.passed < 1) {
+    text += fmt::format(
+        "; {:.1f} % of the generated grasps passed the filter, the others are "
+        "rejected grasps that make up the shortfall",
+        100 * *d.passed);
   }
   return text + fmt::format("; sampling {:.3g} s per 100 grasps", d.seconds_per_100);
 }

@@ -35,6 +35,9 @@ struct ObjectResult {
   std::optional<BaselineScores> baselines;
   std::optional<sim::GraspOutcomes> success;          // the model's grasps in the simulator
   std::optional<sim::GraspOutcomes> nearest_success;  // the nearest object's grasps
+  // With a grasp filter: how many of its n grasps per rotation, all rotations together, passed it
+  // (fewer than all only when the sampling filled a shortfall with rejected grasps).
+  std::optional<std::size_t> passed;
 };
 
 // How the grasps were drawn.
@@ -47,6 +50,7 @@ struct ReportSettings {
   gripper::GraspChecks checks;
   std::string input = "full";  // "full" or "views", maybe " above the table" (to_string)
   std::size_t max_draws = 0;   // with the filters, the most grasps drawn per rotation; 0: no limit
+  bool fill_rejected = false;  // a shortfall made up with rejected grasps instead of an error
 };
 
 struct EvaluationReport {

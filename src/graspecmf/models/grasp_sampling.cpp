@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <string>
 
@@ -39,7 +40,7 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
                                      const SamplingSettings& settings, std::uint64_t seed,
-                                     const gripper::CloudGraspFilter* filter) {
+                                     const gripper::CloudGraspFilter* filter, std::size_t* passed) {
   if (cloud.empty()) throw Error("sampling needs a non-empty point cloud");
   if (n == 0) throw Error("sampling needs at least one grasp");
   if (settings.clouds < 1) throw Error("sampling needs at least one cloud");
@@ -76,7 +77,7 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
   // The generator's random draws are on the CPU, so a seed gives the same grasps on every device.
   const c10::Device device = model.device();
   const Condition condition = model.condition(points.to(device));
-  std::vector<lie::Pose> grasps;
+  std::vector<lie::Pose> grasps, rejected;  // rejected: the first n, for fill_rejected
   std::size_t drawn = 0;
   const std::size_t budget = filter == nullptr || settings.max_draws == 0
                                  ? std::numeric_limits<std::size_t>::max()
@@ -97,8 +98,17 @@ std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
                                   R.data_ptr<double>() + 9 * g),
                               Eigen::Map<const Eigen::Vector3d>(p.data_ptr<double>() + 3 * g)});
       if (filter != nullptr && filter->refines()) grasp = filter->refined(grasp);
-      if (filter == nullptr || filter->keeps(grasp)) grasps.push_back(grasp);
+      if (filter == nullptr || filter->keeps(grasp)) {
+        grasps.push_back(grasp);
+      } else if (settings.fill_rejected && rejected.size() < n) {
+        rejected.push_back(grasp);
+      }
     }
+  }
+  if (passed != nullptr) *passed = grasps.size();
+  if (grasps.size() < n && settings.fill_rejected) {
+    grasps.insert(grasps.end(), rejected.begin(),
+                  rejected.begin() + static_cast<std::ptrdiff_t>(n - grasps.size()));
   }
   if (grasps.size() < n) {
     throw Error("only " + std::to_string(grasps.size()) + " of " + std::to_string(drawn) +

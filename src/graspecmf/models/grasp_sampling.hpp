@@ -3,6 +3,7 @@
 // centre and scale the cloud, draw grasps in network units, and map them back to the cloud's frame
 // in metres, optionally keeping only those a grasp filter passes.
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -23,14 +24,17 @@ namespace graspecmf::models {
 // grasp (CloudGraspFilter::refined) before its checks. With a `filter`, only grasps it keeps are
 // returned: the first round draws n (the grasps of the unfiltered call), later ones the missing
 // count over the kept fraction so far, with a quarter to spare (64 to 64 n grasps), all within
-// settings.max_draws grasps when it is not 0, and Error is thrown if fewer than n are kept after
-// kMaxSamplingRounds or that many draws (or 0 < max_draws < n). Throws Error for an empty or
-// non-finite cloud or n = 0.
+// settings.max_draws grasps when it is not 0, and if fewer than n are kept after
+// kMaxSamplingRounds or that many draws, Error is thrown, or with settings.fill_rejected the kept
+// grasps are followed by the first rejected ones, up to n. `passed`, when given, receives the
+// number of returned grasps the filter kept (n without a filter). Throws Error for an empty or
+// non-finite cloud, n = 0, or 0 < max_draws < n with a filter.
 inline constexpr int kMaxSamplingRounds = 8;
 std::vector<lie::Pose> sample_grasps(const GeneratorImpl& model,
                                      const std::vector<Eigen::Vector3d>& cloud,
                                      const TrainConfig& config, std::size_t n,
                                      const SamplingSettings& settings, std::uint64_t seed,
-                                     const gripper::CloudGraspFilter* filter = nullptr);
+                                     const gripper::CloudGraspFilter* filter = nullptr,
+                                     std::size_t* passed = nullptr);
 
 }  // namespace graspecmf::models

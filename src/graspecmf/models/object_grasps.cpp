@@ -50,8 +50,8 @@ ObjectPoints object_points(camera::ViewPoints view, std::size_t points_per_cloud
 
 std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const ObjectPoints& object,
                                             std::size_t n, const SamplingSettings& settings,
-                                            const gripper::GraspChecks& checks,
-                                            std::uint64_t seed) {
+                                            const gripper::GraspChecks& checks, std::uint64_t seed,
+                                            std::size_t* passed) {
   const auto clouds = static_cast<std::size_t>(settings.clouds);
   const auto k = static_cast<std::size_t>(model.config.model.encoder.k);
   if (object.cloud.size() < clouds * k) {
@@ -65,7 +65,7 @@ std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const Obj
                    gripper::panda::kMaxOpening, object.support);
   }
   return sample_grasps(*model.model, object.cloud, model.config, n, settings, seed,
-                       filter ? &*filter : nullptr);
+                       filter ? &*filter : nullptr, passed);
 }
 
 }  // namespace graspecmf::models

@@ -2,6 +2,7 @@
 // Grasps for one object, as `graspecmf sample` and the Python module draw them: the model's input
 // cloud from a mesh or a point cloud in metres, the points the grasp filters check, and the draw.
 
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -41,10 +42,11 @@ ObjectPoints object_points(camera::ViewPoints view, std::size_t points_per_cloud
                            std::uint64_t seed);
 
 // n grasps T_object_gripper for the object (models::sample_grasps, with a CloudGraspFilter over
-// its filter points and support plane when any check is on or the object has a support). Throws
-// Error if the cloud has fewer points than the model's neighbourhoods need.
+// its filter points and support plane when any check is on or the object has a support); `passed`
+// as there. Throws Error if the cloud has fewer points than the model's neighbourhoods need.
 std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const ObjectPoints& object,
                                             std::size_t n, const SamplingSettings& settings,
-                                            const gripper::GraspChecks& checks, std::uint64_t seed);
+                                            const gripper::GraspChecks& checks, std::uint64_t seed,
+                                            std::size_t* passed = nullptr);
 
 }  // namespace graspecmf::models

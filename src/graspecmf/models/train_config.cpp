@@ -236,7 +236,8 @@ json to_json(const TrainConfig& c) {
             {"steps", c.sampling.steps},
             {"guidance", c.sampling.guidance},
             {"clouds", c.sampling.clouds},
-            {"max_draws", c.sampling.max_draws}}}};
+            {"max_draws", c.sampling.max_draws},
+            {"fill_rejected", c.sampling.fill_rejected}}}};
 }
 
 TrainConfig train_config_from_json(const json& j) {
@@ -322,12 +323,13 @@ TrainConfig train_config_from_json(const json& j) {
   read(j, "validation_objects", c.validation_objects, "");
   if (j.contains("sampling")) {
     const json& s = j["sampling"];
-    only(s, {"solver", "steps", "guidance", "clouds", "max_draws"}, "sampling.");
+    only(s, {"solver", "steps", "guidance", "clouds", "max_draws", "fill_rejected"}, "sampling.");
     read(s, "solver", c.sampling.solver, "sampling.");
     read(s, "steps", c.sampling.steps, "sampling.");
     read(s, "guidance", c.sampling.guidance, "sampling.");
     read(s, "clouds", c.sampling.clouds, "sampling.");
     read(s, "max_draws", c.sampling.max_draws, "sampling.");
+    read(s, "fill_rejected", c.sampling.fill_rejected, "sampling.");
   }
   c.model.field.z_channels = c.model.encoder.out_channels;
   c.data.points = static_cast<std::size_t>(c.model.encoder.points);

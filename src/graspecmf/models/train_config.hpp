@@ -17,9 +17,10 @@ namespace graspecmf::models {
 struct SamplingSettings {
   std::string solver = "rkmk4";  // euler, heun or rkmk4
   int steps = 20;
-  double guidance = 2.0;      // classifier-free guidance weight w
-  int clouds = 1;             // clouds of the object encoded and their z averaged (1 in the paper)
-  std::size_t max_draws = 0;  // with a grasp filter, the most grasps drawn per call; 0: no limit
+  double guidance = 2.0;       // classifier-free guidance weight w
+  int clouds = 1;              // clouds of the object encoded and their z averaged (1 in the paper)
+  std::size_t max_draws = 0;   // with a grasp filter, the most grasps drawn per call; 0: no limit
+  bool fill_rejected = false;  // make up a filter's shortfall with rejected grasps, not an Error
 };
 
 // The settings of 6-DOF GraspNet's generators (model.type graspnet_vae and graspnet_gan).
