@@ -211,6 +211,11 @@ TEST(CloudGraspFilterSupport, NoHandReachesBelowTheTable) {
   const lie::Pose lifted = refiner.refined(top_down(panda::kFingertipZ - 0.005));
   EXPECT_FALSE(refiner.below_support(lifted));
   EXPECT_GT(lifted.p.z(), panda::kFingertipZ - 0.005);
+  // A table alone needs no points.
+  const CloudGraspFilter table_only({}, GraspChecks{}, panda::kMaxOpening, table);
+  EXPECT_TRUE(table_only.keeps(top_down(panda::kFingertipZ + 0.01)));
+  EXPECT_FALSE(table_only.keeps(top_down(panda::kFingertipZ - 0.005)));
+  EXPECT_THROW(CloudGraspFilter({}, kCollisions, panda::kMaxOpening, table), Error);
   // Without a table the same grasp is kept by a collision check: no point is in the hand.
   EXPECT_TRUE(CloudGraspFilter(box, kCollisions).keeps(top_down(panda::kFingertipZ - 0.005)));
 }

@@ -88,7 +88,7 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
     result.emd = e.emd;
     result.mean_emd = e.mean_emd;
     result.sampling_seconds = e.sampling_seconds;
-    if (o.checks.any() || o.input.table) result.passed = e.passed;
+    result.passed = e.passed;
     std::optional<BaselineEvaluation> baseline;
     if (shapes) {
       baseline.emplace(evaluate_baselines(object, *shapes, n, o.seed, filter, o.input,

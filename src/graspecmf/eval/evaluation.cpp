@@ -94,15 +94,15 @@ ObjectEvaluation evaluate_object(const models::GeneratorImpl& model,
     if (input.table) support = geometry::Plane{g * table.normal, table.offset};
     std::optional<gripper::CloudGraspFilter> rotated_filter;
     if (filter.checks.any() || support) {
-      rotated_filter.emplace(rotated(filter.checks.any() ? filter.points : seen, g), filter.checks,
-                             gripper::panda::kMaxOpening, support);
+      rotated_filter.emplace(rotated(filter.points, g), filter.checks, gripper::panda::kMaxOpening,
+                             support);
     }
     const auto start = std::chrono::steady_clock::now();
     std::size_t passed = 0;
     const std::vector<lie::Pose> generated =
         models::sample_grasps(model, rotated_cloud, config, result.n, settings, seed + 2 + r,
                               rotated_filter ? &*rotated_filter : nullptr, &passed);
-    result.passed += passed;
+    if (rotated_filter) result.passed = result.passed.value_or(0) + passed;
     result.sampling_seconds +=
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     result.emd.push_back(metrics::earth_movers_distance(generated, rotated_reference));
@@ -227,11 +227,7 @@ BaselineEvaluation evaluate_baselines(const data::GraspObject& object,
   if (filter.checks.any() || input.table) {
     std::optional<geometry::Plane> support;
     if (input.table) support = table_under(object.mesh);
-    // Without checks the filter's points go unused: a small surface sample stands in.
-    grasp_filter.emplace(filter.checks.any()
-                             ? filter.points
-                             : geometry::sample_surface(object.mesh, kShapePoints, seed).points,
-                         filter.checks, gripper::panda::kMaxOpening, support);
+    grasp_filter.emplace(filter.points, filter.checks, gripper::panda::kMaxOpening, support);
   }
   for (lie::Pose g : shuffled_grasps(nearest, seed)) {
     if (moved.size() == result.n) break;

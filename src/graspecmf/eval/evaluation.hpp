@@ -22,8 +22,8 @@ struct ObjectEvaluation {
   std::size_t n = 0;        // grasps compared per rotation
   std::vector<double> emd;  // one per rotation
   double mean_emd = 0.0;
-  double sampling_seconds = 0.0;  // wall time drawing the grasps, all rotations together
-  std::size_t passed = 0;  // generated grasps the filter kept, all rotations (n each without one)
+  double sampling_seconds = 0.0;      // wall time drawing the grasps, all rotations together
+  std::optional<std::size_t> passed;  // with a filter: the generated grasps it kept, all rotations
   // The n generated grasps of each rotation, rotated back into the object's frame.
   std::vector<std::vector<lie::Pose>> generated;
   std::vector<camera::ViewDraw> views;  // each rotation's camera, when the input is views

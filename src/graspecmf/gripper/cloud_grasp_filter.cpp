@@ -38,7 +38,10 @@ std::vector<Vec3> filter_cloud(const geometry::TriangleMesh& mesh, std::uint64_t
 CloudGraspFilter::CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks, double opening,
                                    std::optional<geometry::Plane> support)
     : points_(std::move(points)), checks_(checks), support_(support) {
-  if (points_.empty()) throw Error("the grasp filter needs a non-empty point cloud");
+  // A filter with only a support plane checks no point.
+  if (points_.empty() && checks_.any()) {
+    throw Error("the grasp filter needs a non-empty point cloud");
+  }
   if (!std::all_of(points_.begin(), points_.end(), [](const Vec3& q) { return q.allFinite(); })) {
     throw Error("the grasp filter's point cloud has a non-finite coordinate");
   }

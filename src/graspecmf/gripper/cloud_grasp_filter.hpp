@@ -46,8 +46,9 @@ class CloudGraspFilter {
  public:
   // Copies the points (metres, object frame). With a support plane (a table; the object on the
   // side its normal points to), a grasp whose hand reaches below it is rejected whatever the
-  // checks, and counts as colliding. Throws Error if there are no points or one is not finite, if
-  // there is no check and no support, or if the opening is out of range.
+  // checks, and counts as colliding; with a support and no check the points may be empty. Throws
+  // Error if a check has no points or a point is not finite, if there is no check and no support,
+  // or if the opening is out of range.
   CloudGraspFilter(std::vector<Vec3> points, GraspChecks checks,
                    double opening = panda::kMaxOpening,
                    std::optional<geometry::Plane> support = std::nullopt);

@@ -61,8 +61,7 @@ std::vector<lie::Pose> sample_object_grasps(const TrainedModel& model, const Obj
   }
   std::optional<gripper::CloudGraspFilter> filter;
   if (checks.any() || object.support) {
-    filter.emplace(object.filter_points.empty() ? object.cloud : object.filter_points, checks,
-                   gripper::panda::kMaxOpening, object.support);
+    filter.emplace(object.filter_points, checks, gripper::panda::kMaxOpening, object.support);
   }
   return sample_grasps(*model.model, object.cloud, model.config, n, settings, seed,
                        filter ? &*filter : nullptr, passed);
