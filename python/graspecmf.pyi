@@ -38,6 +38,8 @@ class GraspModel:
         steps: Optional[int] = None,
         guidance: Optional[float] = None,
         clouds: Optional[int] = None,
+        max_draws: Optional[int] = None,
+        fill_rejected: Optional[bool] = None,
         reject_collisions: bool = False,
         reject_shallow: bool = False,
         refine: bool = False,
@@ -45,7 +47,9 @@ class GraspModel:
     ) -> Poses:
         """num grasps (num, 4, 4) for one object, in the input's frame in metres (coordinates ×
         scale, as ACRONYM stores grasps). Give points (an (N, 3) array or a cloud file) or mesh (a
-        mesh file); coordinates × scale (or units 'mm', 'cm', 'm', 'in') must be metres."""
+        mesh file); coordinates × scale (or units 'mm', 'cm', 'm', 'in') must be metres. With
+        the filters, max_draws caps the grasps drawn and fill_rejected makes up a shortfall with
+        rejected grasps instead of raising Error; `passed` then says how many passed."""
     def sample_view(
         self,
         *,
@@ -62,6 +66,8 @@ class GraspModel:
         steps: Optional[int] = None,
         guidance: Optional[float] = None,
         clouds: Optional[int] = None,
+        max_draws: Optional[int] = None,
+        fill_rejected: Optional[bool] = None,
         reject_collisions: bool = False,
         reject_shallow: bool = False,
         refine: bool = False,
@@ -72,6 +78,10 @@ class GraspModel:
         intrinsics a .json/.yaml file or a dict with fx, fy, cx, cy; mask non-zero on the object;
         camera_pose T_base_camera (4 x 4); table 'none', 'auto' or 'a,b,c,d'. Grasps are in the
         camera frame, or the base frame with camera_pose, and none reaches below the table."""
+    @property
+    def passed(self) -> int:
+        """How many grasps of the last sample or sample_view call passed its filters: fewer than
+        num only with fill_rejected (the rest are rejected grasps); num without filters."""
     @property
     def path(self) -> str: ...
     @property

@@ -226,6 +226,7 @@ lie::Pose camera_pose_of(const py::object& value) {
 struct PyGraspModel {
   std::filesystem::path path;
   models::TrainedModel model;
+  std::size_t passed = 0;  // grasps of the last sample call its filters kept (all without filters)
 
   static PyGraspModel load(const std::optional<std::filesystem::path>& path,
                            const std::string& device, int threads) {
@@ -241,12 +242,16 @@ struct PyGraspModel {
   // The model's sampling settings with the keyword overrides.
   models::SamplingSettings settings_with(const std::optional<std::string>& solver,
                                          std::optional<int> steps, std::optional<double> guidance,
-                                         std::optional<int> clouds) const {
+                                         std::optional<int> clouds,
+                                         std::optional<std::size_t> max_draws,
+                                         std::optional<bool> fill_rejected) const {
     models::SamplingSettings settings = model.config.sampling;
     if (solver) settings.solver = *solver;
     if (steps) settings.steps = *steps;
     if (guidance) settings.guidance = *guidance;
     if (clouds) settings.clouds = *clouds;
+    if (max_draws) settings.max_draws = *max_draws;
+    if (fill_rejected) settings.fill_rejected = *fill_rejected;
     models::validate(settings);
     return settings;
   }
@@ -255,10 +260,11 @@ struct PyGraspModel {
                double scale, const std::optional<std::string>& units, std::size_t num,
                std::uint64_t seed, const std::optional<std::string>& solver,
                std::optional<int> steps, std::optional<double> guidance, std::optional<int> clouds,
-               bool reject_collisions, bool reject_shallow, bool refine,
-               bool allow_any_size) const {
+               std::optional<std::size_t> max_draws, std::optional<bool> fill_rejected,
+               bool reject_collisions, bool reject_shallow, bool refine, bool allow_any_size) {
     if (points.is_none() == !mesh) throw Error("give exactly one of points or mesh");
-    const models::SamplingSettings settings = settings_with(solver, steps, guidance, clouds);
+    const models::SamplingSettings settings =
+        settings_with(solver, steps, guidance, clouds, max_draws, fill_rejected);
     const gripper::GraspChecks checks = checks_of(reject_collisions, reject_shallow, refine);
     const double metres = metres_per_unit(units, scale);
     const std::size_t count = models::input_points(model, settings);
@@ -279,7 +285,7 @@ struct PyGraspModel {
           geometry::require_plausible_size(cloud, "points", geometry::ScaleSource::kKeywords);
         object = models::object_points(std::move(cloud), count, checks, seed);
       }
-      grasps = models::sample_object_grasps(model, object, num, settings, checks, seed);
+      grasps = models::sample_object_grasps(model, object, num, settings, checks, seed, &passed);
     }
     return pose_array(grasps);
   }
@@ -289,9 +295,10 @@ struct PyGraspModel {
                     double voxel, std::size_t num, std::uint64_t seed,
                     const std::optional<std::string>& solver, std::optional<int> steps,
                     std::optional<double> guidance, std::optional<int> clouds,
-                    bool reject_collisions, bool reject_shallow, bool refine,
-                    bool allow_any_size) const {
-    const models::SamplingSettings settings = settings_with(solver, steps, guidance, clouds);
+                    std::optional<std::size_t> max_draws, std::optional<bool> fill_rejected,
+                    bool reject_collisions, bool reject_shallow, bool refine, bool allow_any_size) {
+    const models::SamplingSettings settings =
+        settings_with(solver, steps, guidance, clouds, max_draws, fill_rejected);
     const gripper::GraspChecks checks = checks_of(reject_collisions, reject_shallow, refine);
     const camera::DepthImage image = depth_of(depth, depth_unit);
     const camera::Intrinsics k = intrinsics_of(intrinsics);
@@ -315,7 +322,7 @@ struct PyGraspModel {
       const models::ObjectPoints object = models::object_points(
           std::move(view), static_cast<std::size_t>(model.config.model.encoder.points),
           static_cast<std::size_t>(settings.clouds), checks, seed);
-      grasps = models::sample_object_grasps(model, object, num, settings, checks, seed);
+      grasps = models::sample_object_grasps(model, object, num, settings, checks, seed, &passed);
     }
     return pose_array(grasps);
   }
@@ -441,7 +448,8 @@ PYBIND11_MODULE(graspecmf, m) {
            py::arg("mesh") = py::none(), py::arg("scale") = 1.0, py::arg("units") = py::none(),
            py::arg("num") = 100, py::arg("seed") = 0, py::arg("solver") = py::none(),
            py::arg("steps") = py::none(), py::arg("guidance") = py::none(),
-           py::arg("clouds") = py::none(), py::arg("reject_collisions") = false,
+           py::arg("clouds") = py::none(), py::arg("max_draws") = py::none(),
+           py::arg("fill_rejected") = py::none(), py::arg("reject_collisions") = false,
            py::arg("reject_shallow") = false, py::arg("refine") = false,
            py::arg("allow_any_size") = false,
            "Generates num grasps for one object, given as points (an (N, 3) array or a .xyz/.npy/"
@@ -452,13 +460,16 @@ PYBIND11_MODULE(graspecmf, m) {
            "stores grasps: poses of the ACRONYM Panda gripper frame "
            "(+z approach, fingers close along x, pad centre 0.1034 m along z; docs/gripper.md). "
            "solver/steps/guidance/clouds override the model's sampling settings; "
-           "reject_collisions, reject_shallow and refine are the command line's grasp filters.")
+           "reject_collisions, reject_shallow and refine are the command line's grasp filters; "
+           "max_draws and fill_rejected override how they give up (--max-draws, --fill-rejected); "
+           "`passed` then says how many of the grasps passed.")
       .def("sample_view", &PyGraspModel::sample_view, py::kw_only(), py::arg("depth"),
            py::arg("intrinsics"), py::arg("mask") = py::none(), py::arg("camera_pose") = py::none(),
            py::arg("table") = "none", py::arg("depth_unit") = 0.001, py::arg("voxel") = 0.002,
            py::arg("num") = 100, py::arg("seed") = 0, py::arg("solver") = py::none(),
            py::arg("steps") = py::none(), py::arg("guidance") = py::none(),
-           py::arg("clouds") = py::none(), py::arg("reject_collisions") = false,
+           py::arg("clouds") = py::none(), py::arg("max_draws") = py::none(),
+           py::arg("fill_rejected") = py::none(), py::arg("reject_collisions") = false,
            py::arg("reject_shallow") = false, py::arg("refine") = false,
            py::arg("allow_any_size") = false,
            "Generates num grasps for the object one depth camera sees, as `graspecmf sample "
@@ -468,7 +479,12 @@ PYBIND11_MODULE(graspecmf, m) {
            "array, non-zero on the object; camera_pose: a .json file or a 4 x 4 array "
            "T_base_camera; table: 'none', 'auto' (fitted) or 'a,b,c,d' in the output frame; no "
            "grasp reaches below it. Returns an (num, 4, 4) array of T_output_gripper in metres, "
-           "in the camera frame or, with camera_pose, the base frame.")
+           "in the camera frame or, with camera_pose, the base frame. The filters and their "
+           "keywords are sample's.")
+      .def_property_readonly(
+          "passed", [](const PyGraspModel& self) { return self.passed; },
+          "How many grasps of the last sample or sample_view call passed its filters: fewer "
+          "than num only with fill_rejected (the rest are rejected grasps); num without filters.")
       .def_property_readonly("path", [](const PyGraspModel& self) { return self.path; })
       .def_property_readonly("type",
                              [](const PyGraspModel& self) { return self.model.config.model.type; })

@@ -105,6 +105,26 @@ def test_points_in_millimetres_give_the_same_grasps_as_metres(model):
     assert np.allclose(metres, mm, atol=1e-9)
 
 
+def test_fill_rejected_makes_up_the_filters_shortfall(model):
+    mug = dict(mesh=MESH, scale=SCALE, num=20, seed=1)
+    filters = dict(reject_collisions=True, reject_shallow=True)
+    unfiltered = model.sample(**mug)
+    assert model.passed == 20
+    # One round of 20 draws (the unfiltered call's grasps) keeps 18 on this seed.
+    with pytest.raises(graspecmf.Error, match="only 18 of 20 .* within the limit of 20 draws"):
+        model.sample(**mug, **filters, max_draws=20)
+    filled = model.sample(**mug, **filters, max_draws=20, fill_rejected=True)
+    assert model.passed == 18
+    # The kept grasps come first, as more rounds would keep them; then the two rejected, and
+    # every one is a grasp of the unfiltered call, each once.
+    strict = model.sample(**mug, **filters)
+    assert model.passed == 20
+    assert np.abs(filled[:18] - strict[:18]).max() == 0
+    rows = [int(np.abs(unfiltered - g).max(axis=(1, 2)).argmin()) for g in filled]
+    assert np.abs(unfiltered[rows] - filled).max() == 0 and len(set(rows)) == 20
+    assert rows[:18] == sorted(rows[:18]) and rows[18:] == sorted(rows[18:])
+
+
 def test_simulate_labels_the_sample_grasps(model):
     grasps = graspecmf.read_acronym(GRASPS)
     some = grasps["poses"][:: 200]
