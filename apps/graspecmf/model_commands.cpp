@@ -21,6 +21,7 @@
 #include "graspecmf/data/acronym_file.hpp"
 #include "graspecmf/data/splits.hpp"
 #include "graspecmf/eval/evaluate.hpp"
+#include "graspecmf/eval/partial_report.hpp"
 #include "graspecmf/formats/grasp_files.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
 #include "graspecmf/geometry/object_size.hpp"
@@ -335,16 +336,35 @@ void run_evaluate(const EvaluateArgs& a) {
   options.threads = a.threads;
   options.trial = sim::read_trial_config(a.sim_config);
   options.cache = a.cache;
-  ProgressLine progress("evaluating", objects.size());
   eval::EvaluationCallbacks callbacks;
-  callbacks.progress = [&](std::size_t done, std::size_t) { progress.update(done); };
   callbacks.note = [](const std::string& text) { std::cerr << "note: " << text << "\n"; };
+  // With --out, the finished objects are kept in OUT.partial until the report is written, and a
+  // rerun of the same evaluation resumes from them.
+  const fs::path partial = a.out.empty() ? fs::path() : fs::path(a.out + ".partial");
+  std::vector<eval::ObjectResult> resumed;
+  nlohmann::json identity;
+  if (!partial.empty()) {
+    identity = eval::evaluation_identity(trained, model, objects, a.baselines, options);
+    std::string why;
+    resumed = eval::read_partial_report(partial, identity, why);
+    if (!why.empty()) callbacks.note(why);
+    if (!resumed.empty()) {
+      callbacks.note(fmt::format("resuming after {} of {} objects, from {}", resumed.size(),
+                                 objects.size(), partial.string()));
+    }
+    callbacks.finished = [&](const std::vector<eval::ObjectResult>& done) {
+      eval::write_partial_report(partial, identity, done);
+    };
+  }
+  ProgressLine progress("evaluating", objects.size());
+  callbacks.progress = [&](std::size_t done, std::size_t) { progress.update(done); };
   const eval::EvaluationReport report = eval::evaluate_model(
-      trained, model, objects, a.baselines ? &training : nullptr, options, callbacks);
+      trained, model, objects, a.baselines ? &training : nullptr, options, callbacks, resumed);
   progress.finish();
   std::cout << eval::markdown_table(report) << eval::summary(report) << "\n";
   if (!a.out.empty()) write_file_atomically(a.out, eval::to_json(report).dump(1) + "\n");
   if (!a.markdown.empty()) write_file_atomically(a.markdown, eval::to_markdown(report));
+  if (!partial.empty()) fs::remove(partial);
 }
 
 }  // namespace

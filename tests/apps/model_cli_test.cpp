@@ -18,6 +18,7 @@
 namespace {
 namespace fs = std::filesystem;
 using graspecmf::testing::CliRun;
+using graspecmf::testing::expect_error_after_progress;
 using graspecmf::testing::expect_one_error_line;
 using graspecmf::testing::read_file;
 using graspecmf::testing::run;
@@ -268,6 +269,54 @@ TEST(CliModel, TrainSampleEvaluate) {
   EXPECT_LT(filled_report["passed_fraction"].get<double>(), 1.0);
   EXPECT_LE(filled_report["objects"][0]["passed"].get<std::size_t>(), 12U);  // of 3 × 4
   expect_one_error_line(run(reject + " --max-draws 3", dir), "fewer than the 4 asked for");
+}
+
+// An evaluation stopped after its objects were done (here by a Markdown report it cannot write)
+// resumes from OUT.partial when rerun; a file from something else is replaced.
+TEST(CliModel, EvaluateResumesFromThePartialReport) {
+  ScratchDir dir;
+  const fs::path data = graspecmf::testing::tiny_dataset(dir);
+  write_file(dir / "tiny.json", kTinyConfig);
+  const std::string run_dir = (dir / "run").string();
+  ASSERT_EQ(run("train --config " + (dir / "tiny.json").string() + " --data " + data.string() +
+                    " --out " + run_dir,
+                dir)
+                .exit_code,
+            0);
+  const fs::path out = dir / "report.json", partial = dir / "report.json.partial";
+  const std::string evaluate = "evaluate --model " + run_dir + " --data " + data.string() +
+                               " --split train --num 4 --seed 5 --out " + out.string() +
+                               " --markdown ";
+  const auto emds = [&] {
+    std::vector<double> all;
+    const nlohmann::json report = nlohmann::json::parse(read_file(out));
+    for (const auto& o : report["objects"]) {
+      for (double e : o["emd"]) all.push_back(e);
+    }
+    return all;
+  };
+  expect_error_after_progress(run(evaluate + (dir / "missing/report.md").string(), dir), "missing");
+  ASSERT_TRUE(fs::exists(partial));
+  const std::vector<double> first = emds();
+  ASSERT_EQ(first.size(), 6U);  // two boxes, three rotations
+  fs::remove(out);
+  const auto resumed = run(evaluate + (dir / "report.md").string(), dir);
+  ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
+  EXPECT_NE(resumed.err.find("note: resuming after 2 of 2 objects, from " + partial.string()),
+            std::string::npos)
+      << resumed.err;
+  EXPECT_EQ(emds(), first);
+  EXPECT_FALSE(fs::exists(partial));
+  write_file(partial, "not json");
+  const auto afresh = run(evaluate + (dir / "report.md").string(), dir);
+  ASSERT_EQ(afresh.exit_code, 0) << afresh.err;
+  EXPECT_NE(
+      afresh.err.find(partial.string() + " is not a partial evaluation report; starting afresh"),
+      std::string::npos)
+      << afresh.err;
+  EXPECT_EQ(afresh.err.find("resuming"), std::string::npos) << afresh.err;
+  EXPECT_EQ(emds(), first);
+  EXPECT_FALSE(fs::exists(partial));
 }
 
 TEST(CliModel, BadInput) {

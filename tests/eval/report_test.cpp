@@ -6,12 +6,14 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "graspecmf/eval/partial_report.hpp"
 #include "test_support.hpp"
 
 namespace graspecmf::eval {
 namespace {
 
 using graspecmf::testing::expect_error;
+using graspecmf::testing::ScratchDir;
 
 sim::GraspOutcomes outcomes(std::size_t successes, std::size_t trials, std::size_t clear,
                             std::size_t clear_successes) {
@@ -144,6 +146,87 @@ TEST(EvaluationReport, FilterNoteNamesTheChecks) {
   gripper::GraspChecks both;
   both.collisions = both.shallow = true;
   EXPECT_EQ(filter_note(both), ", colliding and shallow grasps rejected");
+}
+
+void expect_same_outcomes(const std::optional<sim::GraspOutcomes>& a,
+                          const std::optional<sim::GraspOutcomes>& b) {
+  ASSERT_EQ(a.has_value(), b.has_value());
+  if (!a) return;
+  EXPECT_EQ(a->all.successes, b->all.successes);
+  EXPECT_EQ(a->all.trials, b->all.trials);
+  EXPECT_EQ(a->collision_free.successes, b->collision_free.successes);
+  EXPECT_EQ(a->collision_free.trials, b->collision_free.trials);
+}
+
+// Every field equal, the doubles bit for bit.
+void expect_same(const ObjectResult& a, const ObjectResult& b) {
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.n, b.n);
+  EXPECT_EQ(a.emd, b.emd);
+  EXPECT_EQ(a.mean_emd, b.mean_emd);
+  EXPECT_EQ(a.sampling_seconds, b.sampling_seconds);
+  EXPECT_EQ(a.passed, b.passed);
+  ASSERT_EQ(a.baselines.has_value(), b.baselines.has_value());
+  if (a.baselines) {
+    EXPECT_EQ(a.baselines->random_emd, b.baselines->random_emd);
+    EXPECT_EQ(a.baselines->nearest, b.baselines->nearest);
+    EXPECT_EQ(a.baselines->nearest_emd, b.baselines->nearest_emd);
+    EXPECT_EQ(a.baselines->nearest_n, b.baselines->nearest_n);
+    EXPECT_EQ(a.baselines->floor_emd, b.baselines->floor_emd);
+  }
+  expect_same_outcomes(a.success, b.success);
+  expect_same_outcomes(a.nearest_success, b.nearest_success);
+}
+
+TEST(EvaluationReport, ObjectEntriesRoundTrip) {
+  EvaluationReport full = two_objects(true, true);
+  full.objects[0].passed = 140;
+  full.objects[1].passed = 100;
+  full.objects[0].emd[1] = 0.1 + 0.2;  // not a short decimal: must still come back exactly
+  full.objects[1].sampling_seconds = 1.0 / 3;
+  for (const EvaluationReport& r : {full, two_objects(false, false)}) {
+    for (const ObjectResult& o : r.objects) {
+      expect_same(object_result_from_json(to_json(o)), o);
+      // The entry is the report's, and read back from its text form.
+      const nlohmann::json entry = to_json(r)["objects"][&o - r.objects.data()];
+      EXPECT_EQ(entry, to_json(o));
+      expect_same(object_result_from_json(nlohmann::json::parse(entry.dump())), o);
+    }
+  }
+  nlohmann::json broken = to_json(full.objects[0]);
+  broken["success"].erase("collision_free");
+  expect_error([&] { object_result_from_json(broken); }, "no valid \"collision_free\"");
+  broken = to_json(full.objects[0]);
+  broken["emd"] = "0.3";
+  expect_error([&] { object_result_from_json(broken); }, "no valid \"emd\"");
+  expect_error([&] { object_result_from_json(nlohmann::json::array()); }, "no valid \"object\"");
+}
+
+TEST(PartialReport, ResumesOnlyTheSameEvaluation) {
+  const ScratchDir dir;
+  const std::filesystem::path path = dir / "report.json.partial";
+  const nlohmann::json identity = {{"model", "m"}, {"seed", 3}, {"objects", {"a", "b", "c"}}};
+  std::string note = "stale";
+  EXPECT_TRUE(read_partial_report(path, identity, note).empty());  // no file: nothing to say
+  EXPECT_EQ(note, "");
+  const EvaluationReport r = two_objects(true, true);
+  write_partial_report(path, identity, r.objects);
+  const std::vector<ObjectResult> done = read_partial_report(path, identity, note);
+  EXPECT_EQ(note, "");
+  ASSERT_EQ(done.size(), 2U);
+  expect_same(done[0], r.objects[0]);
+  expect_same(done[1], r.objects[1]);
+  nlohmann::json other = identity;
+  other["seed"] = 4;
+  EXPECT_TRUE(read_partial_report(path, other, note).empty());
+  EXPECT_EQ(note, path.string() + " is from an evaluation with other settings; starting afresh");
+  graspecmf::testing::write_file(path, "{\"identity\": ");  // cut short
+  EXPECT_TRUE(read_partial_report(path, identity, note).empty());
+  EXPECT_EQ(note, path.string() + " is not a partial evaluation report; starting afresh");
+  nlohmann::json damaged = {{"identity", identity}, {"objects", {{{"object", "a"}}}}};
+  graspecmf::testing::write_file(path, damaged.dump());
+  EXPECT_TRUE(read_partial_report(path, identity, note).empty());
+  EXPECT_NE(note.find("no valid \"n\"; starting afresh"), std::string::npos) << note;
 }
 
 TEST(EvaluationReport, EmptyOrMixedReportsAreErrors) {

@@ -9,6 +9,7 @@
 #include "../geometry/test_meshes.hpp"
 #include "graspecmf/core/error.hpp"
 #include "graspecmf/data/acronym_file.hpp"
+#include "graspecmf/eval/evaluate.hpp"
 #include "graspecmf/eval/evaluation.hpp"
 #include "graspecmf/flow/prior.hpp"
 #include "graspecmf/geometry/mesh_io.hpp"
@@ -599,6 +600,65 @@ TEST(Evaluation, SingleViewsAboveTheTable) {
   const ObjectEvaluation again =
       evaluate_object(*model, box, config, test_rotations(), 10, config.sampling, 3, {}, input);
   EXPECT_EQ(again.views[2].noise_seed, e.views[2].noise_seed);
+}
+
+TEST(Evaluation, ResumesAfterTheFinishedObjects) {
+  torch::manual_seed(1);
+  const ScratchDir dir;
+  const data::AcronymDataset dataset = data::AcronymDataset::open(tiny_dataset(dir));
+  const std::vector<data::GraspObject> boxes = data::AcronymDataset::load(dataset.objects());
+  const TrainConfig config = tiny_config();
+  TrainedModel trained{config, make_generator(config), 7};
+  trained.model->eval();
+  EvaluationOptions options;
+  options.num = 6;
+  options.seed = 2;
+  options.sampling = config.sampling;
+  std::vector<std::vector<ObjectResult>> saved;
+  EvaluationCallbacks callbacks;
+  callbacks.finished = [&](const std::vector<ObjectResult>& done) { saved.push_back(done); };
+  const EvaluationReport full = evaluate_model(trained, "m", boxes, &boxes, options, callbacks);
+  ASSERT_EQ(saved.size(), 3U);
+  EXPECT_EQ(saved[1].size(), 2U);
+  // Resumed after the first object: it is taken as saved (marked here), the others come out as
+  // in the uninterrupted run, bit for bit, and only they are reported finished.
+  std::vector<ObjectResult> first = saved[0];
+  first[0].emd[0] = 9.0;
+  saved.clear();
+  const EvaluationReport resumed =
+      evaluate_model(trained, "m", boxes, &boxes, options, callbacks, first);
+  ASSERT_EQ(resumed.objects.size(), 3U);
+  EXPECT_EQ(resumed.objects[0].emd[0], 9.0);
+  EXPECT_EQ(saved.size(), 2U);
+  for (std::size_t i = 1; i < 3; ++i) {
+    EXPECT_EQ(resumed.objects[i].emd, full.objects[i].emd) << i;
+    EXPECT_EQ(resumed.objects[i].baselines->nearest_emd, full.objects[i].baselines->nearest_emd);
+  }
+  // A resumed run of everything evaluates nothing.
+  saved.clear();
+  EXPECT_EQ(evaluate_model(trained, "m", boxes, nullptr, options, callbacks, full.objects)
+                .objects[2]
+                .mean_emd,
+            full.objects[2].mean_emd);
+  EXPECT_TRUE(saved.empty());
+  first[0].name = "other";
+  expect_error([&] { evaluate_model(trained, "m", boxes, nullptr, options, {}, first); },
+               "resumed result 1 is of other, not Box_b0_1");
+  // The identity changes with any setting that changes a result, and not otherwise.
+  const nlohmann::json identity = evaluation_identity(trained, "m", boxes, true, options);
+  EXPECT_EQ(evaluation_identity(trained, "m", boxes, true, options), identity);
+  EXPECT_EQ(identity["objects"][2], "Box_b2_1");
+  EXPECT_EQ(identity["device"], "cpu");
+  EvaluationOptions other = options;
+  other.threads = 2;
+  EXPECT_EQ(evaluation_identity(trained, "m", boxes, true, other), identity);
+  other.sampling.steps += 1;
+  EXPECT_NE(evaluation_identity(trained, "m", boxes, true, other), identity);
+  EXPECT_NE(evaluation_identity(trained, "m", boxes, false, options), identity);
+  EXPECT_NE(evaluation_identity(trained, "m", {boxes[0]}, true, options), identity);
+  other = options;
+  other.trial.friction = 0.5;
+  EXPECT_NE(evaluation_identity(trained, "m", boxes, true, other), identity);
 }
 
 TEST(Baselines, NearestObjectAndRandomGrasps) {

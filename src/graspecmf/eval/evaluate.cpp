@@ -1,6 +1,7 @@
 #include "graspecmf/eval/evaluate.hpp"
 
 #include <algorithm>
+#include <nlohmann/json.hpp>
 #include <optional>
 
 #include "graspecmf/core/error.hpp"
@@ -53,15 +54,9 @@ void simulate(const data::GraspObject& object, const ObjectEvaluation& e,
   }
 }
 
-}  // namespace
-
-EvaluationReport evaluate_model(const models::TrainedModel& model, const std::string& model_name,
-                                const std::vector<data::GraspObject>& objects,
-                                const std::vector<data::GraspObject>* training,
-                                const EvaluationOptions& o, const EvaluationCallbacks& callbacks) {
-  if (objects.empty()) throw Error("evaluate: no objects to evaluate on");
-  std::optional<TrainingShapes> shapes;
-  if (training != nullptr) shapes.emplace(*training, o.seed, o.input.views);
+// The report's model and settings, without objects.
+EvaluationReport report_header(const models::TrainedModel& model, const std::string& model_name,
+                               const EvaluationOptions& o) {
   EvaluationReport report;
   report.model = model_name;
   report.step = model.step;
@@ -76,7 +71,32 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
                      o.sampling.max_draws,
                      o.sampling.fill_rejected};
   report.seed = o.seed;
-  for (std::size_t i = 0; i < objects.size(); ++i) {
+  return report;
+}
+
+}  // namespace
+
+EvaluationReport evaluate_model(const models::TrainedModel& model, const std::string& model_name,
+                                const std::vector<data::GraspObject>& objects,
+                                const std::vector<data::GraspObject>* training,
+                                const EvaluationOptions& o, const EvaluationCallbacks& callbacks,
+                                const std::vector<ObjectResult>& resumed) {
+  if (objects.empty()) throw Error("evaluate: no objects to evaluate on");
+  if (resumed.size() > objects.size()) throw Error("evaluate: more resumed results than objects");
+  for (std::size_t i = 0; i < resumed.size(); ++i) {
+    if (resumed[i].name != objects[i].name) {
+      throw Error("evaluate: resumed result " + std::to_string(i + 1) + " is of " +
+                  resumed[i].name + ", not " + objects[i].name);
+    }
+  }
+  std::optional<TrainingShapes> shapes;
+  if (training != nullptr && resumed.size() < objects.size()) {
+    shapes.emplace(*training, o.seed, o.input.views);
+  }
+  EvaluationReport report = report_header(model, model_name, o);
+  report.objects = resumed;
+  if (callbacks.progress && !resumed.empty()) callbacks.progress(resumed.size(), objects.size());
+  for (std::size_t i = resumed.size(); i < objects.size(); ++i) {
     const data::GraspObject& object = objects[i];
     const std::size_t n = o.num == 0 ? object.grasps.size() : o.num;
     const ObjectFilter filter = object_filter(object, o.checks, o.seed);
@@ -96,9 +116,29 @@ EvaluationReport evaluate_model(const models::TrainedModel& model, const std::st
       result.baselines = baseline->scores;
     }
     if (o.success > 0) simulate(object, e, baseline ? &*baseline : nullptr, o, callbacks, result);
+    if (callbacks.finished) callbacks.finished(report.objects);
     if (callbacks.progress) callbacks.progress(i + 1, objects.size());
   }
   return report;
+}
+
+nlohmann::json evaluation_identity(const models::TrainedModel& model, const std::string& model_name,
+                                   const std::vector<data::GraspObject>& objects, bool baselines,
+                                   const EvaluationOptions& o) {
+  const EvaluationReport header = report_header(model, model_name, o);
+  nlohmann::json names = nlohmann::json::array();
+  for (const data::GraspObject& object : objects) names.push_back(object.name);
+  return {{"model", header.model},
+          {"step", header.step},
+          {"parameters", header.parameters},
+          {"device", model.model->parameters().front().device().str()},
+          {"sampling", to_json(header.settings)},
+          {"seed", header.seed},
+          {"num", o.num},
+          {"success", o.success},
+          {"trial", sim::to_json(o.trial)},
+          {"baselines", baselines},
+          {"objects", names}};
 }
 
 }  // namespace graspecmf::eval

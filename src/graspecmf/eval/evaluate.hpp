@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <nlohmann/json_fwd.hpp>
 #include <string>
 #include <vector>
 
@@ -34,15 +35,27 @@ struct EvaluationOptions {
 struct EvaluationCallbacks {
   std::function<void(std::size_t done, std::size_t total)> progress;  // after every object
   std::function<void(const std::string& text)> note;  // e.g. that an open mesh was closed
+  // After every object evaluated here: the results so far, resumed ones included (to save them).
+  std::function<void(const std::vector<ObjectResult>& done)> finished;
 };
 
 // Evaluates `model` (loaded from the folder `model_name`) on each object; with `training`, also the
-// reference baselines, whose nearest-object search covers those objects. Throws Error if objects
-// is empty, or as evaluate_object, evaluate_baselines and the simulator do.
+// reference baselines, whose nearest-object search covers those objects. The first objects take
+// the `resumed` results of an interrupted run of the same evaluation as they are (each object's
+// result depends only on it and the options). Throws Error if objects is empty, if `resumed` does
+// not name the first objects in order, or as evaluate_object, evaluate_baselines and the simulator.
 EvaluationReport evaluate_model(const models::TrainedModel& model, const std::string& model_name,
                                 const std::vector<data::GraspObject>& objects,
                                 const std::vector<data::GraspObject>* training,
                                 const EvaluationOptions& options,
-                                const EvaluationCallbacks& callbacks = {});
+                                const EvaluationCallbacks& callbacks = {},
+                                const std::vector<ObjectResult>& resumed = {});
+
+// What the saved results of an evaluate_model run must match to be resumed: the model (folder,
+// step, parameters, device), the objects' names, whether there are baselines, and every option
+// that changes a result (all but threads and the cache).
+nlohmann::json evaluation_identity(const models::TrainedModel& model, const std::string& model_name,
+                                   const std::vector<data::GraspObject>& objects, bool baselines,
+                                   const EvaluationOptions& options);
 
 }  // namespace graspecmf::eval

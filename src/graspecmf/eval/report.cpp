@@ -149,46 +149,89 @@ std::string filter_note(const gripper::GraspChecks& checks) {
                                                          : "shallow");
 }
 
+json to_json(const ReportSettings& s) {
+  return {{"sampler", s.sampler},
+          {"solver", s.solver},
+          {"steps", s.steps},
+          {"guidance", s.guidance},
+          {"clouds", s.clouds},
+          {"refine", s.checks.refine},
+          {"reject_collisions", s.checks.collisions},
+          {"reject_shallow", s.checks.shallow},
+          {"max_draws", s.max_draws},
+          {"fill_rejected", s.fill_rejected},
+          {"input", s.input}};
+}
+
+json to_json(const ObjectResult& o) {
+  json entry = {{"object", o.name},
+                {"n", o.n},
+                {"emd", o.emd},
+                {"mean_emd", o.mean_emd},
+                {"sampling_seconds", o.sampling_seconds}};
+  if (o.passed) entry["passed"] = *o.passed;
+  if (o.baselines) {
+    const BaselineScores& b = *o.baselines;
+    entry["random_emd"] = b.random_emd;
+    entry["nearest_training_object"] = b.nearest;
+    entry["nearest_emd"] = b.nearest_emd;
+    entry["nearest_n"] = b.nearest_n;
+    entry["floor_emd"] = b.floor_emd ? json(*b.floor_emd) : json(nullptr);
+  }
+  if (o.success) entry["success"] = outcomes_json(*o.success);
+  if (o.nearest_success) entry["nearest_success"] = outcomes_json(*o.nearest_success);
+  return entry;
+}
+
+ObjectResult object_result_from_json(const json& entry) {
+  std::string field = "object";
+  try {
+    const auto get = [&](const json& from, const char* key) -> const json& {
+      field = key;
+      return from.at(key);
+    };
+    const auto outcomes = [&](const json& j) {
+      sim::GraspOutcomes o;
+      o.all = {get(j, "successes").get<std::size_t>(), get(j, "trials").get<std::size_t>()};
+      const json& clear = get(j, "collision_free");
+      o.collision_free = {get(clear, "successes").get<std::size_t>(),
+                          get(clear, "trials").get<std::size_t>()};
+      return o;
+    };
+    ObjectResult o;
+    o.name = get(entry, "object").get<std::string>();
+    o.n = get(entry, "n").get<std::size_t>();
+    o.emd = get(entry, "emd").get<std::vector<double>>();
+    o.mean_emd = get(entry, "mean_emd").get<double>();
+    o.sampling_seconds = get(entry, "sampling_seconds").get<double>();
+    if (entry.contains("passed")) o.passed = get(entry, "passed").get<std::size_t>();
+    if (entry.contains("random_emd")) {
+      BaselineScores& b = o.baselines.emplace();
+      b.random_emd = get(entry, "random_emd").get<double>();
+      b.nearest = get(entry, "nearest_training_object").get<std::string>();
+      b.nearest_emd = get(entry, "nearest_emd").get<double>();
+      b.nearest_n = get(entry, "nearest_n").get<std::size_t>();
+      const json& floor = get(entry, "floor_emd");
+      if (!floor.is_null()) b.floor_emd = floor.get<double>();
+    }
+    if (entry.contains("success")) o.success = outcomes(get(entry, "success"));
+    if (entry.contains("nearest_success")) {
+      o.nearest_success = outcomes(get(entry, "nearest_success"));
+    }
+    return o;
+  } catch (const json::exception&) {
+    throw Error("evaluation report: an object entry has no valid \"" + field + "\"");
+  }
+}
+
 json to_json(const EvaluationReport& r) {
   const Derived d = derive(r);
   json objects = json::array();
-  for (const ObjectResult& o : r.objects) {
-    json entry = {{"object", o.name},
-                  {"n", o.n},
-                  {"emd", o.emd},
-                  {"mean_emd", o.mean_emd},
-                  {"sampling_seconds", o.sampling_seconds}};
-    if (o.passed) entry["passed"] = *o.passed;
-    if (d.baselines) {
-      const BaselineScores& b = *o.baselines;
-      entry["random_emd"] = b.random_emd;
-      entry["nearest_training_object"] = b.nearest;
-      entry["nearest_emd"] = b.nearest_emd;
-      entry["nearest_n"] = b.nearest_n;
-      entry["floor_emd"] = b.floor_emd ? json(*b.floor_emd) : json(nullptr);
-    }
-    if (d.success) {
-      entry["success"] = outcomes_json(*o.success);
-      if (d.baselines) entry["nearest_success"] = outcomes_json(*o.nearest_success);
-    }
-    objects.push_back(entry);
-  }
-  const ReportSettings& s = r.settings;
+  for (const ObjectResult& o : r.objects) objects.push_back(to_json(o));
   json j = {{"model", r.model},
             {"step", r.step},
             {"parameters", r.parameters},
-            {"sampling",
-             {{"sampler", s.sampler},
-              {"solver", s.solver},
-              {"steps", s.steps},
-              {"guidance", s.guidance},
-              {"clouds", s.clouds},
-              {"refine", s.checks.refine},
-              {"reject_collisions", s.checks.collisions},
-              {"reject_shallow", s.checks.shallow},
-              {"max_draws", s.max_draws},
-              {"fill_rejected", s.fill_rejected},
-              {"input", s.input}}},
+            {"sampling", to_json(r.settings)},
             {"seed", r.seed},
             {"objects", objects},
             {"mean_emd", d.emd.mean},

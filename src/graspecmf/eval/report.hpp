@@ -66,6 +66,14 @@ struct EvaluationReport {
 // (mean EMDs, paired comparisons against the nearest object, the floor comparison, success).
 // Throws Error for a report without objects.
 nlohmann::json to_json(const EvaluationReport& report);
+// The report's "sampling" entry.
+nlohmann::json to_json(const ReportSettings& settings);
+// One object's entry in the report's JSON: "object", "n", "emd", "mean_emd", "sampling_seconds"
+// and whichever of "passed", the baselines' and the success fields it has.
+nlohmann::json to_json(const ObjectResult& object);
+// The ObjectResult of such an entry (numbers round-trip exactly). Throws Error naming the entry's
+// missing or malformed field.
+ObjectResult object_result_from_json(const nlohmann::json& entry);
 // The per-object Markdown table (one row per object; baseline and success columns when present).
 std::string markdown_table(const EvaluationReport& report);
 // The one-paragraph summary printed under the table. Throws Error for a report without objects.
