@@ -1,11 +1,10 @@
 #include "graspecmf/eval/partial_report.hpp"
 
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "graspecmf/core/atomic_file.hpp"
 #include "graspecmf/core/error.hpp"
+#include "graspecmf/core/input_file.hpp"
 
 namespace graspecmf::eval {
 using nlohmann::json;
@@ -20,11 +19,8 @@ void write_partial_report(const std::filesystem::path& path, const json& identit
 std::vector<ObjectResult> read_partial_report(const std::filesystem::path& path,
                                               const json& identity, std::string& note) {
   note.clear();
-  std::ifstream in(path);
-  if (!in) return {};
-  std::stringstream text;
-  text << in.rdbuf();
-  const json saved = json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+  if (!std::filesystem::exists(path)) return {};
+  const json saved = json::parse(read_input_file(path), nullptr, /*allow_exceptions=*/false);
   const std::string name = path.string();
   if (!saved.is_object() || !saved.contains("objects") || !saved["objects"].is_array()) {
     note = name + " is not a partial evaluation report; starting afresh";

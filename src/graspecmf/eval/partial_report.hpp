@@ -16,7 +16,8 @@ void write_partial_report(const std::filesystem::path& path, const nlohmann::jso
                           const std::vector<ObjectResult>& done);
 
 // The objects of the partial report at path if it exists and has this identity; none otherwise,
-// and then `note` says why it is not resumed (left empty when there is no file).
+// and then `note` says why it is not resumed (left empty when there is no file). Throws Error if
+// the path is not a readable regular file.
 std::vector<ObjectResult> read_partial_report(const std::filesystem::path& path,
                                               const nlohmann::json& identity, std::string& note);
 
