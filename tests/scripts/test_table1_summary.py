@@ -65,13 +65,17 @@ def test_claim_reports_the_spread_and_each_baselines_paired_margin(tmp_path):
     write_cell(tmp_path, "se3dif-none", report([1.3] * 4, [0.1] * 4), filtered)
     # The non-equivariant flow under z: better than GraspECMF on one mug of four.
     write_cell(tmp_path, "flow_dgcnn-z", report([0.4, 1.0, 1.0, 1.0], [0.9, 0.2, 0.2, 0.2]))
-    out = summary(tmp_path, "graspecmf", "se3dif-none", "flow_dgcnn-z")
+    # SE(3)-DiF under SO(3): EMD ratio 1.5 < the paper's 1.73; success −5 points < its −0.05.
+    write_cell(tmp_path, "se3dif-so3", report([0.78] * 4, [0.85] * 4))
+    out = summary(tmp_path, "graspecmf", "se3dif-none", "se3dif-so3", "flow_dgcnn-z")
     assert "0.5000 / 0.5100 / 0.5200, a spread (max − min) / min of 4.0 %" in out
     assert "(the paper's 5.1 %). Under 5 %: yes." in out
     assert "| se3dif | none | +0.8000 [+0.8000, +0.8000] | 2.60 (2.71) | — | 4/4 | +70.0 " \
         "[+70.0, +70.0] (68.4) | 4/4 | no, —, yes |" in out
     assert "| flow_dgcnn | z | +0.3400 " in out and "| 1.67 (—) | — | 3/4 | +42.5 " in out
     assert "no paper row |" in out
+    assert "| se3dif | so3 | +0.2600 [+0.2600, +0.2600] | 1.50 (1.73) | — | 4/4 | -5.0 " \
+        "[-5.0, -5.0] (-0.0) | 0/4 | no, —, no |" in out
     with_filters = out.split("### With --reject-collisions")[1].split("###")[0]
     assert "| se3dif | 1.2000 [1.2000, 1.2000] | … | … | 20.0 [20.0, 20.0] | … | … |" in with_filters
     assert "| se3dif-none | 10 | … | 1000 | 0.5 | 0.0 | 0.5 | 25.0 |" in out
